@@ -1,0 +1,26 @@
+# The two commands of the README:
+#   make run    install deps, build, and replay the project's own sample data -> results/sample/
+#   make test   install deps, build, and run every test
+BUILD ?= build
+JOBS  ?= $(shell nproc)
+
+.PHONY: all deps build run test clean
+all: build
+
+deps:
+	@./scripts/install-deps.sh
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+run: build
+	./scripts/run-sample.sh $(BUILD)/bin results/sample
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+clean:
+	rm -rf $(BUILD) results

@@ -1,0 +1,10 @@
+#pragma once
+// Common main() wrapper: every error becomes one line on stderr and a non-zero exit code.
+#include <functional>
+#include <string>
+
+namespace vlo
+{
+/// Runs body(); InputError -> "<app>: error: <what>" and exit code 2; any other exception -> code 1.
+int runApp(const std::string& app, const std::function<int()>& body);
+}  // namespace vlo

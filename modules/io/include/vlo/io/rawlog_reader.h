@@ -1,0 +1,50 @@
+#pragma once
+// Streaming reader of MRPT rawlogs (observation-only and action/sensory-frame formats) that pairs
+// camera and LiDAR observations into synchronized frames by timestamp. Never loads the whole file.
+#include <vlo/core/frame.h>
+
+#include <memory>
+#include <string>
+
+namespace vlo
+{
+struct RawlogReaderOptions
+{
+	std::string camera_label = "CAMERA";
+	std::string lidar_label = "LIDAR";
+	double max_time_diff = 0.05;  ///< seconds between a paired image and scan
+	bool need_camera = true;  ///< false: frames may lack an image (LiDAR-only runs)
+	bool need_lidar = true;  ///< false: frames may lack a scan (camera-only runs)
+};
+
+struct RawlogStats
+{
+	std::size_t observations = 0;  ///< all observations read
+	std::size_t frames = 0;  ///< frames returned
+	std::size_t unpaired_images = 0, unpaired_scans = 0;  ///< dropped for lack of a partner
+	std::size_t other_labels = 0;  ///< observations with neither label
+	std::size_t invalid_points = 0;  ///< NaN/inf LiDAR points removed
+};
+
+class RawlogReader
+{
+   public:
+	/// Throws InputError if the file is missing or is not a rawlog.
+	explicit RawlogReader(const std::string& path, RawlogReaderOptions options = {});
+	~RawlogReader();
+	RawlogReader(const RawlogReader&) = delete;
+	RawlogReader& operator=(const RawlogReader&) = delete;
+
+	/// Fills the next frame; false at the end of the file. Throws InputError naming the file for a
+	/// corrupt or truncated file, timestamps out of order, a wrong image size, or (at the end) when a
+	/// needed sensor label never appeared (the message lists the labels seen).
+	bool next(Frame& frame);
+	const RawlogStats& stats() const;
+	/// One line: "N frames; M images and K scans without partner; ..." for logs.
+	std::string statsSummary() const;
+
+   private:
+	struct Impl;
+	std::unique_ptr<Impl> impl_;
+};
+}  // namespace vlo

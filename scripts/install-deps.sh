@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs vlo's Debian build and test dependencies when missing. Idempotent: quick when all present.
+set -euo pipefail
+PKGS=(build-essential cmake pkg-config xz-utils
+      libmrpt-dev mrpt-apps libopencv-dev libceres-dev libpcl-dev libeigen3-dev
+      libgtest-dev libbenchmark-dev libgl-dev libegl-dev parallel)
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

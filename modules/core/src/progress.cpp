@@ -25,7 +25,7 @@ ProgressLine::ProgressLine(std::string label, std::size_t total)
 
 ProgressLine::~ProgressLine() { finish(); }
 
-void ProgressLine::update(std::size_t done)
+void ProgressLine::update(std::size_t done, double fraction)
 {
 	done_ = done;
 	if (!enabled()) return;
@@ -35,7 +35,10 @@ void ProgressLine::update(std::size_t done)
 	printed_ = true;
 	const double secs = std::chrono::duration<double>(now - start_).count();
 	const double rate = secs > 0 ? done / secs : 0;
-	if (total_ > 0 && rate > 0)
+	if (total_ == 0 && fraction > 0)
+		std::fprintf(stderr, "\r%s %zu  %.1f/s  %3.0f%%  ETA %.0f s   ", label_.c_str(), done, rate, 100 * fraction,
+			secs * (1 - fraction) / fraction);
+	else if (total_ > 0 && rate > 0)
 		std::fprintf(stderr, "\r%s %zu/%zu  %.1f/s  ETA %.0f s   ", label_.c_str(), done, total_, rate,
 			(total_ - done) / rate);
 	else

@@ -13,7 +13,8 @@ class ProgressLine
 	/// total = 0 when unknown (no ETA is shown).
 	ProgressLine(std::string label, std::size_t total);
 	~ProgressLine();
-	void update(std::size_t done);
+	/// `fraction` in [0, 1] of the whole job when the total count is unknown (e.g. bytes read).
+	void update(std::size_t done, double fraction = -1);
 	void finish();
 	static void setEnabled(bool on);  ///< force on/off (tests, --quiet)
 

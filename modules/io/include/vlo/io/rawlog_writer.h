@@ -1,6 +1,7 @@
 #pragma once
-// Writer of observation-only MRPT rawlogs. Images go to "<name>_Images/" beside the file as PNG
-// (external storage) unless inline. The file appears only on commit().
+// Writer of observation-only MRPT rawlogs (gzip). Images go as PNG to "<name>_Images/" beside the
+// file (external storage) unless inline. Nothing appears at `path` until commit(): the rawlog is
+// written to "<path>.partial" and the images to "<name>_Images.partial/", both renamed on commit.
 #include <vlo/core/frame.h>
 
 #include <memory>
@@ -13,19 +14,27 @@ class CObservation;
 
 namespace vlo
 {
+/// "<dir>/<name>_Images" for "<dir>/<name>.<ext>": where MRPT looks for a rawlog's external images.
+std::string rawlogImagesDir(const std::string& rawlog_path);
+
 class RawlogWriter
 {
    public:
+	/// Throws InputError naming `path` when it cannot be created.
 	explicit RawlogWriter(const std::string& path, bool external_images = true);
-	~RawlogWriter();  ///< removes the partial file if not committed
+	~RawlogWriter();  ///< removes the partial output if not committed
 	RawlogWriter(const RawlogWriter&) = delete;
 	RawlogWriter& operator=(const RawlogWriter&) = delete;
 
+	/// Writes one observation as it is (an externally stored image must already be in place).
 	void write(const mrpt::obs::CObservation& obs);
-	/// Writes the frame's image and scan (whichever it has) with the rig's poses and intrinsics.
+	/// Writes the frame's image and scan (whichever it has) with the rig's poses and intrinsics, at
+	/// time frame.t. External images are named "<label>_<frame.index, 6 digits>.png".
 	void writeFrame(const Frame& frame, const std::string& camera_label = "CAMERA",
 		const std::string& lidar_label = "LIDAR");
 	void commit();
+
+	std::size_t observationsWritten() const;
 
    private:
 	struct Impl;

@@ -1,0 +1,92 @@
+// vlo-eval: scores an estimated trajectory against ground truth (KITTI odometry metric, ATE/ARE).
+#include <vlo/core/app_main.h>
+#include <vlo/core/cli.h>
+#include <vlo/core/error.h>
+#include <vlo/eval/camera_frame.h>
+#include <vlo/eval/evaluate.h>
+#include <vlo/eval/report.h>
+#include <vlo/io/trajectory.h>
+
+#include <iostream>
+#include <sstream>
+
+using namespace vlo;
+
+namespace
+{
+std::vector<double> parseLengths(const std::string& s)
+{
+	std::vector<double> v;
+	std::string tok;
+	for (std::istringstream ss(s); std::getline(ss, tok, ',');)
+	{
+		char* end = nullptr;
+		const double d = std::strtod(tok.c_str(), &end);
+		if (tok.empty() || *end != '\0' || !(d > 0)) failInput("--kitti-lengths", "'" + tok + "' is not a positive length");
+		v.push_back(d);
+	}
+	if (v.empty()) failInput("--kitti-lengths", "no length given");
+	return v;
+}
+
+int run(int argc, char** argv)
+{
+	CommandLine cl(argc, argv, 1,
+		{{"gt", "GT.tum", "ground truth (TUM, vehicle frame)", true},
+			{"est", "EST.tum", "estimated trajectory (TUM, vehicle frame)", true},
+			{"metric", "kitti|ate|all", "metrics to compute (default all)"},
+			{"align", "se3|sim3|none", "alignment before ATE/ARE (default se3; sim3 for unscaled monocular)"},
+			{"json", "OUT.json", "also write the results as JSON"},
+			{"max-dt", "S", "largest ground-truth gap to interpolate across, s (default 3x its median spacing)"},
+			{"gt-translation-only", "", "ground-truth orientations are not valid (e.g. RTK): ATE only"},
+			{"cam0-T-vehicle", "\"12 numbers\"", "rig, row-major 3x4: KITTI metric in camera 0"},
+			{"kitti-calib", "calib.txt", "rig from the Tr line of a KITTI calib.txt: KITTI metric in camera 0"},
+			{"kitti-lengths", "L1,L2,..", "KITTI segment lengths, m (default 100,200,...,800)"},
+			{"kitti-step", "N", "KITTI first frames every N matched frames (default 10)"},
+			{"write-aligned", "OUT.tum", "write the aligned, matched estimate (TUM)"}});
+	if (cl.helpRequested())
+	{
+		std::cout << cl.usage("vlo-eval --gt GT.tum --est EST.tum [options]\n\n"
+								"Scores an estimated trajectory against ground truth: the KITTI odometry metric and\n"
+								"ATE/ARE after Umeyama alignment. See doc/EVALUATION.md.");
+		return 0;
+	}
+	EvalOptions opts;
+	opts.gt_name = cl.get("gt");
+	opts.est_name = cl.get("est");
+	parseMetric(cl.get("metric", "all"), opts);
+	opts.align = parseAlignment(cl.get("align", "se3"));
+	opts.association.max_gap_s = cl.getDouble("max-dt", 0);
+	if (cl.has("max-dt") && !(opts.association.max_gap_s > 0)) failInput("--max-dt", "must be positive");
+	opts.gt_translation_only = cl.has("gt-translation-only");
+	if (cl.has("cam0-T-vehicle") && cl.has("kitti-calib"))
+		failInput("command line", "give either --cam0-T-vehicle or --kitti-calib, not both");
+	if (cl.has("cam0-T-vehicle")) opts.cam0_T_vehicle = parseCam0TVehicle(cl.get("cam0-T-vehicle"));
+	if (cl.has("kitti-calib")) opts.cam0_T_vehicle = readKittiCalibTr(cl.get("kitti-calib"));
+	if (cl.has("kitti-lengths")) opts.kitti_options.lengths = parseLengths(cl.get("kitti-lengths"));
+	const long step = cl.getInt("kitti-step", 10);
+	if (step < 1) failInput("--kitti-step", "must be at least 1");
+	opts.kitti_options.step = static_cast<std::size_t>(step);
+
+	const Trajectory gt = readTum(opts.gt_name);
+	const Trajectory est = readTum(opts.est_name);
+	const EvalReport report = evaluate(gt, est, opts);
+	std::cout << formatTable(report);
+	if (cl.has("json")) writeJson(cl.get("json"), report);
+	if (cl.has("write-aligned"))
+	{
+		Trajectory aligned = report.association.est;
+		if (report.ate)
+			for (auto& p : aligned)
+			{
+				// A Sim(3) is not an isometry: the position takes the scale, the orientation only R.
+				p.pose.translation() = report.ate->alignment * Eigen::Vector3d(p.pose.translation());
+				p.pose.linear() = report.ate->alignment.R * p.pose.linear();
+			}
+		writeTum(cl.get("write-aligned"), aligned);
+	}
+	return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv) { return runApp("vlo-eval", [&] { return run(argc, argv); }); }

@@ -1,0 +1,146 @@
+// vlo-snapshot: offscreen PNG snapshots of a run's results, no display needed: a top-down view of
+// trajectories (against ground truth), a 3D view of a point-cloud map, camera frames with the LiDAR
+// scan projected. See doc/SNAPSHOTS.md.
+#include <vlo/core/app_main.h>
+#include <vlo/core/cli.h>
+#include <vlo/core/error.h>
+#include <vlo/io/pcd.h>
+#include <vlo/io/rawlog_reader.h>
+#include <vlo/io/trajectory.h>
+#include <vlo/viz/map3d.h>
+#include <vlo/viz/projected_scan.h>
+#include <vlo/viz/topdown.h>
+
+#include <mrpt/system/filesystem.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <set>
+
+using namespace vlo;
+
+namespace
+{
+/// Runs f and prints "wrote PATH (N ms)".
+template <typename F>
+void timed(const std::string& path, F&& f)
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	f();
+	const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+	std::cout << "wrote " << path << " (" << long(ms) << " ms)" << std::endl;
+}
+
+std::set<long> frameIndices(const CommandLine& cl)
+{
+	std::set<long> ks;
+	for (const auto& s : cl.getAll("frame"))
+	{
+		char* end = nullptr;
+		const long k = std::strtol(s.c_str(), &end, 10);
+		if (s.empty() || *end != '\0' || k < 0) failInput("--frame", "'" + s + "' is not a frame index (0, 1, ...)");
+		ks.insert(k);
+	}
+	if (ks.empty()) ks.insert(0);
+	return ks;
+}
+
+void projectedFrames(
+	RawlogReader& reader, const std::string& rawlog, const std::set<long>& ks, const std::string& out)
+{
+	Frame f;
+	long k = -1;
+	for (long want : ks)
+	{
+		while (k < want)
+		{
+			if (!reader.next(f))
+				failInput(rawlog, "has only " + std::to_string(k + 1) + " frames; --frame " + std::to_string(want) +
+						" does not exist");
+			++k;
+		}
+		if (!f.has_image || !f.has_scan)
+			failInput(rawlog, "frame " + std::to_string(k) + " lacks " + (f.has_image ? "a LiDAR scan" : "an image"));
+		const std::string png = out + "/frame_" + std::to_string(k) + ".png";
+		ProjectedScanStyle style;
+		char t[48];
+		std::snprintf(t, sizeof t, "  (t = %.3f s)", f.t);
+		style.title = "frame " + std::to_string(k) + t;
+		timed(png, [&] { renderProjectedScan(f.image, f.scan, f.rig, png, {}, style); });
+	}
+}
+
+int run(int argc, char** argv)
+{
+	CommandLine cl(argc, argv, 1,
+		{{"traj", "A.tum", "estimated trajectory (TUM, vehicle frame of frame 0)", false, true},
+			{"name", "NAME", "legend name of the matching --traj, in order (default: file name)", false, true},
+			{"gt", "GT.tum", "ground truth (TUM), drawn in grey"},
+			{"map", "MAP.pcd", "point-cloud map (PCD, same frame as the trajectories)"},
+			{"rawlog", "R.rawlog", "rawlog with CAMERA and LIDAR observations"},
+			{"frame", "K", "frame index in --rawlog to draw with the projected scan (default 0)", false, true},
+			{"title", "TEXT", "title above the top-down and 3D views"},
+			{"out", "DIR", "output folder (created if missing)", true}});
+	if (cl.helpRequested())
+	{
+		std::cout << cl.usage("vlo-snapshot --traj A.tum [--traj B.tum ...] [--name A ...] [--gt GT.tum]\n"
+							  "             [--map map.pcd] [--rawlog R.rawlog --frame K ...] --out DIR\n\n"
+							  "Writes DIR/topdown.png (trajectories, from above), DIR/map3d.png (map with\n"
+							  "trajectories, oblique) and DIR/frame_K.png (image with the LiDAR scan projected).\n"
+							  "Headless: no display is needed. See doc/SNAPSHOTS.md.");
+		return 0;
+	}
+	const auto trajFiles = cl.getAll("traj"), names = cl.getAll("name");
+	if (names.size() > trajFiles.size())
+		failInput("--name",
+			std::to_string(names.size()) + " names for " + std::to_string(trajFiles.size()) + " --traj files");
+	if (cl.has("frame") && !cl.has("rawlog")) failInput("--frame", "needs --rawlog");
+	if (trajFiles.empty() && !cl.has("gt") && !cl.has("map") && !cl.has("rawlog"))
+		failInput("command line", "nothing to draw: give --traj, --gt, --map or --rawlog");
+
+	// Read every input before writing anything, so that a bad file leaves no partial output.
+	std::vector<NamedTrajectory> trajs;
+	for (size_t i = 0; i < trajFiles.size(); ++i)
+	{
+		Trajectory t = readTum(trajFiles[i]);
+		if (t.empty()) failInput(trajFiles[i], "no poses");
+		trajs.push_back({i < names.size() ? names[i] : mrpt::system::extractFileName(trajFiles[i]), std::move(t), {}});
+	}
+	Trajectory gt;
+	if (cl.has("gt") && (gt = readTum(cl.get("gt"))).empty()) failInput(cl.get("gt"), "no poses");
+	const Trajectory* gtp = cl.has("gt") ? &gt : nullptr;
+	PointCloud map;
+	if (cl.has("map") && (map = readPcd(cl.get("map"))).empty()) failInput(cl.get("map"), "no valid points");
+	const std::set<long> frames = frameIndices(cl);
+	std::unique_ptr<RawlogReader> reader;  // opened now: a missing or foreign file fails before any output
+	if (cl.has("rawlog")) reader = std::make_unique<RawlogReader>(cl.get("rawlog"));
+
+	const std::string out = cl.get("out");
+	std::error_code ec;
+	std::filesystem::create_directories(out, ec);
+	if (ec || !std::filesystem::is_directory(out)) failInput(out, "cannot create the output folder");
+	if (!trajs.empty() || gtp)
+	{
+		TopDownStyle style;
+		style.title = cl.get("title");
+		timed(out + "/topdown.png", [&] { renderTopDown(trajs, gtp, out + "/topdown.png", style); });
+	}
+	if (cl.has("map"))
+	{
+		Map3DStyle style;
+		style.title = cl.get("title");
+		timed(out + "/map3d.png", [&] { renderMap3D(map, trajs, gtp, out + "/map3d.png", style); });
+	}
+	if (reader) projectedFrames(*reader, cl.get("rawlog"), frames, out);
+	return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	return runApp("vlo-snapshot", [&] { return run(argc, argv); });
+}

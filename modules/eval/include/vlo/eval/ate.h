@@ -1,0 +1,35 @@
+#pragma once
+// Absolute trajectory and rotation errors (ATE / ARE) of an estimate against time-associated ground
+// truth, after aligning the estimate with a closed-form Umeyama fit.
+#include <vlo/core/se3.h>
+#include <vlo/io/trajectory.h>
+
+#include <optional>
+#include <string>
+
+namespace vlo
+{
+enum class Alignment
+{
+	None,  ///< compare as given (both trajectories share the first frame by convention)
+	SE3,  ///< rigid: the estimate's frame is arbitrary
+	Sim3  ///< similarity: also its scale (unscaled monocular output)
+};
+/// "none" | "se3" | "sim3"; throws InputError naming `where` otherwise.
+Alignment parseAlignment(const std::string& s, const std::string& where = "--align");
+const char* toString(Alignment a);
+
+struct AteResult
+{
+	Sim3 alignment;  ///< applied to the estimate: aligned_i = alignment * est_i
+	double ate_rmse_m = 0, ate_mean_m = 0, ate_max_m = 0;
+	std::optional<double> are_rmse_deg;  ///< empty when the ground truth has no rotations
+	/// Scale of the best Sim(3) fit, whatever the alignment applied; empty when the estimate does not move.
+	std::optional<double> sim3_scale;
+	std::size_t n = 0;
+};
+
+/// gt and est are pairs by index (see associate()), at least 3 of them. ARE uses the rotation angle of
+/// G_i^-1 * A * P_i; pass gt_has_rotation = false for translation-only ground truth.
+AteResult computeAte(const Trajectory& gt, const Trajectory& est, Alignment align, bool gt_has_rotation = true);
+}  // namespace vlo

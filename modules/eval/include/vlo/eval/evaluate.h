@@ -1,0 +1,44 @@
+#pragma once
+// One evaluation of an estimated trajectory against ground truth: association by time, then ATE/ARE
+// and the KITTI metric as requested. What the app prints and writes comes from the EvalReport.
+#include <vlo/eval/association.h>
+#include <vlo/eval/ate.h>
+#include <vlo/eval/kitti_metric.h>
+
+#include <Eigen/Geometry>
+#include <optional>
+#include <string>
+
+namespace vlo
+{
+struct EvalOptions
+{
+	bool ate = true, kitti = true;  ///< which metrics to compute
+	Alignment align = Alignment::SE3;  ///< for ATE/ARE only; the KITTI metric is relative and unaligned
+	AssociationOptions association;
+	/// Ground-truth orientations are meaningless (RTK positions only): ARE and KITTI are skipped.
+	bool gt_translation_only = false;
+	/// When set, both trajectories (vehicle frame) are moved to camera 0 for the KITTI metric.
+	std::optional<Eigen::Isometry3d> cam0_T_vehicle;
+	KittiOptions kitti_options;
+	std::string gt_name = "ground truth", est_name = "estimate";  ///< for messages (file paths)
+};
+
+/// "all" | "ate" | "kitti" -> sets opts.ate / opts.kitti; throws InputError otherwise.
+void parseMetric(const std::string& s, EvalOptions& opts);
+
+struct EvalReport
+{
+	EvalOptions options;
+	Association association;
+	double gt_length_m = 0, est_length_m = 0;  ///< path lengths over the matched poses
+	std::optional<AteResult> ate;
+	std::string ate_note, are_note;  ///< why ATE / ARE are missing, if they are
+	std::optional<KittiResult> kitti;  ///< set when computed, even with no segments
+	std::string kitti_note;  ///< why the KITTI numbers are missing, if they are
+	std::string kitti_frame;  ///< "camera 0" or "as given"
+};
+
+/// Throws InputError (naming the files in opts) when fewer than 3 poses overlap in time.
+EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptions& opts);
+}  // namespace vlo

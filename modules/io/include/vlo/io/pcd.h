@@ -1,0 +1,23 @@
+#pragma once
+// Point Cloud Data files (PCL's PCD v0.7) without PCL's io library (which drags in VTK).
+// Writes x y z intensity as float32, binary or ascii. Reads ascii and binary files with any
+// fields (x, y, z required; intensity optional, else 0; others skipped); not binary_compressed.
+#include <vlo/core/frame.h>
+
+#include <string>
+
+namespace vlo
+{
+enum class PcdFormat
+{
+	Binary,
+	Ascii
+};
+
+/// Atomic: the file appears complete or not at all. Throws InputError naming the file on failure.
+void writePcd(const std::string& path, const PointCloud& cloud, PcdFormat format = PcdFormat::Binary);
+
+/// Points with a non-finite x, y or z (PCL's organised clouds hold NaN for no return) are dropped.
+/// Throws InputError naming the file (and the header line) for a malformed or truncated file.
+PointCloud readPcd(const std::string& path);
+}  // namespace vlo

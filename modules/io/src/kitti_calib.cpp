@@ -1,0 +1,147 @@
+#include <vlo/core/error.h>
+#include <vlo/core/se3.h>
+#include <vlo/io/kitti_calib.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace vlo
+{
+KittiCalibFile::KittiCalibFile(const std::string& path) : path_(path)
+{
+	std::ifstream in(path);
+	if (!in) failInput(path, "cannot open calibration file");
+	std::string line;
+	for (std::size_t lineNo = 1; std::getline(in, line); ++lineNo)
+	{
+		const auto colon = line.find(':');
+		if (colon == std::string::npos) continue;
+		const std::string key = line.substr(0, colon);
+		std::istringstream ss(line.substr(colon + 1));
+		std::vector<double> v;
+		std::string tok;
+		bool numeric = true;
+		while (ss >> tok)
+		{
+			char* end = nullptr;
+			const double d = std::strtod(tok.c_str(), &end);
+			if (*end != '\0') numeric = false;
+			v.push_back(d);
+		}
+		if (numeric)
+			values_[key] = v;
+		else
+			non_numeric_[key] = line;
+	}
+}
+
+std::vector<double> KittiCalibFile::get(const std::string& key, std::size_t n) const
+{
+	const auto it = values_.find(key);
+	if (it == values_.end())
+		failInput(path_, non_numeric_.count(key) ? "key '" + key + "' does not hold numbers" : "missing key '" + key + "'");
+	if (it->second.size() != n)
+		failInput(path_, "key '" + key + "' has " + std::to_string(it->second.size()) + " numbers, expected " +
+				std::to_string(n));
+	for (double d : it->second)
+		if (!std::isfinite(d)) failInput(path_, "key '" + key + "' holds a non-finite number");
+	return it->second;
+}
+
+Matrix34d KittiCalibFile::matrix34(const std::string& key) const
+{
+	const auto v = get(key, 12);
+	Matrix34d M;
+	for (int r = 0; r < 3; ++r)
+		for (int c = 0; c < 4; ++c) M(r, c) = v[4 * r + c];
+	return M;
+}
+
+Eigen::Matrix3d KittiCalibFile::matrix33(const std::string& key) const
+{
+	const auto v = get(key, 9);
+	Eigen::Matrix3d M;
+	for (int r = 0; r < 3; ++r)
+		for (int c = 0; c < 3; ++c) M(r, c) = v[3 * r + c];
+	return M;
+}
+
+Eigen::Vector3d KittiCalibFile::vector3(const std::string& key) const
+{
+	const auto v = get(key, 3);
+	return {v[0], v[1], v[2]};
+}
+
+PinholeCamera intrinsicsOf(const Matrix34d& P, int width, int height)
+{
+	PinholeCamera c;
+	c.fx = P(0, 0);
+	c.fy = P(1, 1);
+	c.cx = P(0, 2);
+	c.cy = P(1, 2);
+	c.width = width;
+	c.height = height;
+	return c;
+}
+
+Eigen::Vector3d offsetOf(const Matrix34d& P) { return P.leftCols<3>().inverse() * P.col(3); }
+
+Eigen::Isometry3d rigidFrom34(const Matrix34d& M)
+{
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	T.linear() = orthonormalize(M.leftCols<3>());
+	T.translation() = M.col(3);
+	return T;
+}
+
+Eigen::Isometry3d nominalCam0TVehicle()
+{
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	T.linear() << 0, -1, 0, 0, 0, -1, 1, 0, 0;
+	return T;
+}
+
+KittiOdometryCalib readKittiOdometryCalib(const std::string& calib_txt)
+{
+	const KittiCalibFile f(calib_txt);
+	KittiOdometryCalib c;
+	c.P0 = f.matrix34("P0");
+	if (c.P0(0, 0) <= 0 || c.P0(1, 1) <= 0) failInput(calib_txt, "P0 has a non-positive focal length");
+	c.has_tr = f.has("Tr");
+	c.cam0_T_velo = c.has_tr ? rigidFrom34(f.matrix34("Tr")) : nominalCam0TVehicle();
+	return c;
+}
+
+KittiRawCalib readKittiRawCalib(const std::string& cam_to_cam, const std::string& velo_to_cam, int camera)
+{
+	const KittiCalibFile cc(cam_to_cam), vc(velo_to_cam);
+	KittiRawCalib c;
+	c.camera = camera;
+	const std::string X = "0" + std::to_string(camera);
+	c.P_rect = cc.matrix34("P_rect_" + X);
+	c.R_rect_00 = cc.matrix33("R_rect_00");
+	const auto S = cc.get("S_rect_" + X, 2);
+	c.camera_intrinsics = intrinsicsOf(c.P_rect, static_cast<int>(S[0]), static_cast<int>(S[1]));
+	if (!c.camera_intrinsics.valid()) failInput(cam_to_cam, "P_rect_" + X + " or S_rect_" + X + " is not a valid camera");
+	c.velo_to_cam.leftCols<3>() = vc.matrix33("R");
+	c.velo_to_cam.col(3) = vc.vector3("T");
+	// camera X <- rectified cam0 (offset t) <- unrectified cam0 (R_rect_00) <- Velodyne ([R|T]).
+	Matrix34d cam0_T_velo;
+	cam0_T_velo.leftCols<3>() = c.R_rect_00 * c.velo_to_cam.leftCols<3>();
+	cam0_T_velo.col(3) = c.R_rect_00 * c.velo_to_cam.col(3);
+	Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
+	offset.translation() = offsetOf(c.P_rect);
+	c.camera_T_velo = offset * rigidFrom34(cam0_T_velo);
+	return c;
+}
+
+Matrix34d KittiRawCalib::projection() const
+{
+	Eigen::Matrix4d R4 = Eigen::Matrix4d::Identity(), T4 = Eigen::Matrix4d::Identity();
+	R4.topLeftCorner<3, 3>() = R_rect_00;
+	T4.topRows<3>() = velo_to_cam;
+	return P_rect * R4 * T4;
+}
+}  // namespace vlo

@@ -1,0 +1,29 @@
+#pragma once
+// What both KITTI importers share: numbered data files, and writing frames to a rawlog.
+#include <vlo/core/frame.h>
+#include <vlo/io/kitti_import.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vlo
+{
+/// Files named "<number>.<ext>" in dir, by number. Throws InputError naming dir if it is missing
+/// or holds no such file.
+std::map<long, std::string> listNumberedFiles(const std::string& dir, const std::string& ext);
+
+/// The data of one KITTI frame. An empty `scan` means no LiDAR for that frame.
+struct KittiFrameFiles
+{
+	std::size_t index = 0;
+	double t_image = 0, t_scan = 0;
+	std::string image, scan;
+};
+
+/// Writes the frames (image, then scan, each at its own time) to summary.rawlog through a
+/// RawlogWriter, with a progress line. A rig camera of size 0 takes the first image's size;
+/// every image must have the rig camera's size. Fills the counts of `summary`.
+void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig, const std::string& camera_label,
+	const std::string& lidar_label, const std::string& progress_label, ImportSummary& summary);
+}  // namespace vlo

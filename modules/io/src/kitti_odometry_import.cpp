@@ -1,0 +1,103 @@
+#include "kitti_import_common.h"
+
+#include <vlo/core/error.h>
+#include <vlo/io/kitti_calib.h>
+#include <vlo/io/kitti_import.h>
+#include <vlo/io/trajectory.h>
+
+#include <chrono>
+#include <filesystem>
+
+namespace vlo
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+/// Ground truth of the selected frames in the vehicle frame, relative to the first of them.
+Trajectory groundTruth(const std::string& poses, const std::vector<double>& times,
+	const std::vector<KittiFrameFiles>& frames, const Eigen::Isometry3d& cam0_T_velo)
+{
+	const Trajectory all = readKittiPoses(poses, times);
+	Trajectory sel;
+	for (const auto& f : frames)
+	{
+		if (f.index >= all.size())
+			failInput(poses, "has " + std::to_string(all.size()) + " poses, frame " + std::to_string(f.index) + " has none");
+		sel.push_back(all[f.index]);
+	}
+	return relativeToFirst(cameraToVehicle(sel, cam0_T_velo));
+}
+}  // namespace
+
+ImportSummary importKittiOdometry(const KittiOdometryImport& opt)
+{
+	const auto start = std::chrono::steady_clock::now();
+	ImportSummary summary;
+	summary.rawlog = opt.out;
+	const std::string seq = (fs::path(opt.root) / "sequences" / opt.seq).string();
+	const std::string calib_path = seq + "/calib.txt", times_path = seq + "/times.txt";
+	const auto calib = readKittiOdometryCalib(calib_path);
+	const auto images = listNumberedFiles(seq + "/image_0", "png");
+	const auto times = readKittiTimes(times_path);
+
+	const bool has_velodyne = fs::is_directory(seq + "/velodyne");
+	const bool lidar = has_velodyne && calib.has_tr;
+	if (!has_velodyne) summary.warnings.push_back(seq + ": no velodyne/ folder, writing a camera-only rawlog");
+	if (has_velodyne && !calib.has_tr)
+		summary.warnings.push_back(calib_path + ": no Tr (Velodyne to camera), writing a camera-only rawlog");
+	if (!calib.has_tr)
+		summary.warnings.push_back(calib_path +
+			": without Tr the vehicle frame is camera 0 turned to x forward, y left, z up (also for the ground truth)");
+	const auto scans = lidar ? listNumberedFiles(seq + "/velodyne", "bin") : std::map<long, std::string>{};
+
+	const long last = opt.last < 0 ? images.rbegin()->first : opt.last;
+	if (opt.first < 0 || opt.first > last)
+		failInput("command line", "bad frame range --first " + std::to_string(opt.first) + " --last " + std::to_string(last));
+	std::vector<KittiFrameFiles> frames;
+	std::size_t missing_scans = 0;
+	for (auto it = images.lower_bound(opt.first); it != images.end() && it->first <= last; ++it)
+	{
+		KittiFrameFiles f;
+		f.index = static_cast<std::size_t>(it->first);
+		if (f.index >= times.size())
+			failInput(times_path, "has " + std::to_string(times.size()) + " times, image " + it->second + " has none");
+		f.t_image = f.t_scan = times[f.index];
+		f.image = it->second;
+		if (lidar)
+		{
+			const auto s = scans.find(it->first);
+			if (s != scans.end()) f.scan = s->second;
+			else ++missing_scans;
+		}
+		frames.push_back(f);
+	}
+	if (frames.empty()) failInput(seq + "/image_0", "no images in the frame range " + std::to_string(opt.first) + ".." + std::to_string(last));
+	if (missing_scans > 0)
+		summary.warnings.push_back(seq + "/velodyne: " + std::to_string(missing_scans) + " frames have no scan");
+
+	// Read the ground truth before writing anything, so that a bad poses file leaves no output.
+	const std::string poses = (fs::path(opt.root) / "poses" / (opt.seq + ".txt")).string();
+	Trajectory gt;
+	if (fs::exists(poses))
+		gt = groundTruth(poses, times, frames, calib.cam0_T_velo);
+	else
+		summary.warnings.push_back(poses + ": not found, no ground truth written");
+
+	SensorRig rig;
+	rig.has_camera = true;
+	rig.camera = intrinsicsOf(calib.P0, 0, 0);  // size from the first image
+	Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
+	offset.translation() = offsetOf(calib.P0);
+	rig.vehicle_T_camera = (offset * calib.cam0_T_velo).inverse();
+	rig.has_lidar = lidar;
+	writeKittiFrames(frames, rig, opt.camera_label, opt.lidar_label, "kitti-odometry " + opt.seq, summary);
+	if (!gt.empty())
+	{
+		summary.ground_truth = groundTruthPathFor(opt.out);
+		writeTum(summary.ground_truth, gt);
+	}
+	summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	return summary;
+}
+}  // namespace vlo

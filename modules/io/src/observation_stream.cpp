@@ -1,0 +1,85 @@
+#include "observation_stream.h"
+
+#include <vlo/core/error.h>
+
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CSensoryFrame.h>
+
+#include <new>
+
+namespace vlo
+{
+using mrpt::obs::CObservation;
+
+std::string mrptMessage(const std::string& what)
+{
+	// MRPT nests "Message: ..." blocks, outermost first; the last one names the actual failure.
+	std::string line = what;
+	const auto m = what.rfind("Message:");
+	if (m != std::string::npos)
+	{
+		const auto start = what.find_first_not_of(' ', m + 8);
+		line = what.substr(start, what.find('\n', start) - start);
+	}
+	else if (const auto nl = what.find('\n'); nl != std::string::npos)
+		line.resize(nl);
+	for (char& c : line)
+		if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+	return line;
+}
+
+ObservationStream::ObservationStream(const std::string& path)
+	: path_(path), in_(path), ar_(mrpt::serialization::archiveUniquePtrFrom(in_))
+{
+	if (!readObject()) failInput(path_, "empty rawlog: no observations");
+}
+
+CObservation::Ptr ObservationStream::next()
+{
+	while (pending_.empty())
+		if (!readObject()) return nullptr;
+	auto obs = pending_.front();
+	pending_.pop_front();
+	return obs;
+}
+
+bool ObservationStream::readObject()
+{
+	if (end_) return false;
+	const std::string nth = "object " + std::to_string(objects_ + 1);
+	const uint64_t before = in_.getPosition();
+	mrpt::serialization::CSerializable::Ptr obj;
+	try
+	{
+		obj = ar_->ReadObject();
+	}
+	catch (const mrpt::serialization::CExceptionEOF&)
+	{
+		// A clean end reads nothing; a cut-off file ends inside an object or before the gzip trailer.
+		if (in_.getPosition() != before) failInput(path_, "truncated: the file ends inside " + nth);
+		if (in_.truncated())
+			failInput(path_, "truncated: the gzip stream is cut off after " + std::to_string(objects_) + " objects");
+		end_ = true;
+		return false;
+	}
+	catch (const std::bad_alloc&)
+	{
+		failInput(path_, "corrupt rawlog: absurd size while reading " + nth);
+	}
+	catch (const std::exception& e)
+	{
+		if (in_.truncated()) failInput(path_, "truncated: the file ends inside " + nth);
+		if (objects_ == 0) failInput(path_, "not an MRPT rawlog (" + mrptMessage(e.what()) + ")");
+		failInput(path_, "corrupt rawlog at " + nth + ": " + mrptMessage(e.what()));
+	}
+	++objects_;
+	if (auto obs = std::dynamic_pointer_cast<CObservation>(obj))
+		pending_.push_back(obs);
+	else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+		for (const auto& o : *sf) pending_.push_back(o);
+	else if (!std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
+		failInput(path_, std::string(objects_ == 1 ? "not an MRPT rawlog" : "unexpected object") + " (" + nth +
+				" is a " + obj->GetRuntimeClass()->className + ")");
+	return true;
+}
+}  // namespace vlo

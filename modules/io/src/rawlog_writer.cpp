@@ -1,0 +1,119 @@
+#include <vlo/core/atomic_file.h>
+#include <vlo/core/error.h>
+#include <vlo/io/frame_observations.h>
+#include <vlo/io/rawlog_writer.h>
+
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace vlo
+{
+namespace fs = std::filesystem;
+
+std::string rawlogImagesDir(const std::string& rawlog_path)
+{
+	const fs::path p(rawlog_path);
+	return (p.parent_path() / (p.stem().string() + "_Images")).string();
+}
+
+struct RawlogWriter::Impl
+{
+	std::string path, partial, images_dir, images_partial;
+	bool external = true, committed = false;
+	std::size_t written = 0;
+	mrpt::io::CFileGZOutputStream out;
+	mrpt::serialization::CArchive::UniquePtr ar;
+
+	void discard() noexcept
+	{
+		std::error_code ec;
+		out.close();
+		fs::remove(partial, ec);
+		if (external) fs::remove_all(images_partial, ec);
+	}
+};
+
+RawlogWriter::RawlogWriter(const std::string& path, bool external_images) : impl_(std::make_unique<Impl>())
+{
+	auto& d = *impl_;
+	d.path = path;
+	d.partial = path + ".partial";
+	d.external = external_images;
+	d.images_dir = rawlogImagesDir(path);
+	d.images_partial = d.images_dir + ".partial";
+	std::error_code ec;
+	if (fs::is_directory(path, ec)) failInput(path, "is a directory, expected a rawlog file name");
+	const fs::path parent = fs::path(path).parent_path();
+	if (!parent.empty()) fs::create_directories(parent, ec);
+	if (!d.out.open(d.partial, 1 /*fast gzip: point clouds barely compress*/))
+		failInput(path, "cannot open for writing");
+	d.ar = mrpt::serialization::archiveUniquePtrFrom(d.out);
+	if (d.external)
+	{
+		fs::remove_all(d.images_partial, ec);
+		if (!fs::create_directories(d.images_partial, ec))
+		{
+			d.discard();
+			failInput(d.images_partial, "cannot create image directory: " + ec.message());
+		}
+	}
+}
+
+RawlogWriter::~RawlogWriter()
+{
+	if (!impl_->committed) impl_->discard();
+}
+
+void RawlogWriter::write(const mrpt::obs::CObservation& obs)
+{
+	try
+	{
+		*impl_->ar << obs;
+	}
+	catch (const std::exception& e)
+	{
+		failInput(impl_->path, std::string("write failed: ") + e.what());
+	}
+	++impl_->written;
+}
+
+void RawlogWriter::writeFrame(const Frame& frame, const std::string& camera_label, const std::string& lidar_label)
+{
+	auto& d = *impl_;
+	if (frame.has_image)
+	{
+		auto obs = toImageObservation(frame, camera_label);
+		if (d.external)
+		{
+			char name[64];
+			std::snprintf(name, sizeof(name), "_%06zu.png", frame.index);
+			const std::string file = camera_label + name;
+			if (!obs->image.saveToFile(d.images_partial + "/" + file))
+				failInput(d.images_partial + "/" + file, "cannot write image");
+			obs->image.setExternalStorage(file);  // relative to <name>_Images
+		}
+		write(*obs);
+	}
+	if (frame.has_scan) write(*toScanObservation(frame, lidar_label));
+}
+
+void RawlogWriter::commit()
+{
+	auto& d = *impl_;
+	d.out.close();
+	std::error_code ec;
+	if (d.external)
+	{
+		fs::remove_all(d.images_dir, ec);
+		fs::rename(d.images_partial, d.images_dir, ec);
+		if (ec) failInput(d.images_dir, "cannot move images into place: " + ec.message());
+	}
+	commitFile(d.partial, d.path);
+	d.committed = true;
+}
+
+std::size_t RawlogWriter::observationsWritten() const { return impl_->written; }
+}  // namespace vlo

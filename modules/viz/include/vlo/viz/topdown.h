@@ -1,0 +1,38 @@
+#pragma once
+// Top-down (bird's-eye) view of trajectories in the vehicle frame of frame 0: x (forward at the
+// start) to the right, y (left at the start) up, equal aspect, metres.
+#include <vlo/io/trajectory.h>
+#include <vlo/viz/color.h>
+#include <vlo/viz/plot.h>
+
+#include <opencv2/core/mat.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vlo
+{
+struct NamedTrajectory
+{
+	std::string name;
+	Trajectory traj;
+	std::optional<Rgb> color;  ///< default: paletteColor(index in the list)
+};
+
+struct TopDownStyle
+{
+	int width = 1200, height = 1000;
+	std::string title;  ///< above the plot when not empty
+	std::string gt_name = "ground truth";
+	int line_width = 2;  ///< estimates; ground truth is drawn wider underneath
+	bool show_lengths = true;  ///< path length after each legend name
+};
+
+/// The world -> pixel mapping drawTopDown uses. Throws InputError when there is no pose at all.
+PlotArea topDownArea(const std::vector<NamedTrajectory>& trajs, const Trajectory* gt, const TopDownStyle& style = {});
+/// BGR image of style.width x style.height. gt may be null.
+cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory* gt, const TopDownStyle& style = {});
+void renderTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory* gt, const std::string& png,
+	const TopDownStyle& style = {});
+}  // namespace vlo

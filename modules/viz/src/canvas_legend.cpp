@@ -1,0 +1,69 @@
+#include "canvas.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vlo::canvas
+{
+namespace
+{
+constexpr int kRow = 24, kPad = 10, kSwatch = 34;
+}
+
+cv::Size legendSize(const std::vector<LegendItem>& items)
+{
+	int w = 0;
+	for (const auto& it : items) w = std::max(w, textSize(it.label, kMedium).width);
+	return {2 * kPad + kSwatch + 10 + w, 2 * kPad + kRow * int(items.size()) - 6};
+}
+
+void legend(cv::Mat& img, cv::Point tl, const std::vector<LegendItem>& items)
+{
+	const cv::Rect box(tl, legendSize(items));
+	cv::Mat roi = img(box & cv::Rect(0, 0, img.cols, img.rows));
+	roi.convertTo(roi, -1, 0.15, 255 * 0.85);  // mostly opaque: data below stays faintly visible
+	cv::rectangle(img, box, cv::Scalar(160, 160, 160), 1);
+	for (size_t i = 0; i < items.size(); ++i)
+	{
+		const auto& it = items[i];
+		const int cy = tl.y + kPad + int(i) * kRow + 8, x0 = tl.x + kPad, xm = x0 + kSwatch / 2;
+		const cv::Scalar c = bgr(it.color);
+		switch (it.kind)
+		{
+			case LegendItem::Line: cv::line(img, {x0, cy}, {x0 + kSwatch, cy}, c, it.thickness, cv::LINE_AA); break;
+			case LegendItem::Dot: cv::circle(img, {xm, cy}, it.thickness, c, cv::FILLED, cv::LINE_AA); break;
+			case LegendItem::Square:
+				cv::rectangle(img, cv::Rect(xm - 6, cy - 6, 13, 13), c, cv::FILLED);
+				cv::rectangle(img, cv::Rect(xm - 6, cy - 6, 13, 13), kInk, 1);
+				break;
+			case LegendItem::Ring:
+				cv::circle(img, {xm, cy}, 7, kWhite, cv::FILLED, cv::LINE_AA);
+				cv::circle(img, {xm, cy}, 7, c, 2, cv::LINE_AA);
+				break;
+		}
+		text(img, it.label, {x0 + kSwatch + 10, cy}, kMedium, kInk, HAlign::Left, VAlign::Middle);
+	}
+}
+
+void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const std::string& label,
+	const std::function<Rgb(double)>& colormap)
+{
+	for (int x = 0; x < bar.width; ++x)
+	{
+		const cv::Scalar c = bgr(colormap((x + 0.5) / bar.width));
+		cv::line(img, {bar.x + x, bar.y}, {bar.x + x, bar.y + bar.height - 1}, c, 1);
+	}
+	cv::rectangle(img, bar, kInk, 1);
+	if (!(vmax > vmin)) return;
+	const double step = niceStep((vmax - vmin) / 5);
+	for (double v = std::ceil(vmin / step) * step; v <= vmax + 1e-9 * step; v += step)
+	{
+		const int x = bar.x + int(std::lround((v - vmin) / (vmax - vmin) * (bar.width - 1)));
+		cv::line(img, {x, bar.y + bar.height}, {x, bar.y + bar.height + 4}, kInk, 1);
+		text(img, formatTick(v, step), {x, bar.y + bar.height + 7}, kSmall, kInk, HAlign::Center, VAlign::Top);
+	}
+	text(img, label, {bar.x + bar.width + 12, bar.y + bar.height / 2}, kMedium, kInk, HAlign::Left, VAlign::Middle);
+}
+}  // namespace vlo::canvas

@@ -1,0 +1,112 @@
+#include <vlo/core/error.h>
+#include <vlo/viz/png.h>
+#include <vlo/viz/series.h>
+
+#include "canvas.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vlo
+{
+namespace
+{
+constexpr int kLeft = 95, kRight = 30, kBottom = 80;
+int topMargin(const SeriesStyle& s) { return s.title.empty() ? 30 : 60; }
+
+void dashedLine(cv::Mat& img, cv::Point a, cv::Point b, cv::Scalar c)
+{
+	const double len = std::hypot(b.x - a.x, b.y - a.y);
+	for (double s = 0; s < len; s += 16)
+	{
+		const double e = std::min(len, s + 9);
+		cv::line(img, a + (b - a) * (s / len), a + (b - a) * (e / len), c, 1, cv::LINE_AA);
+	}
+}
+}  // namespace
+
+PlotArea seriesArea(const std::vector<Series>& series, const SeriesStyle& style)
+{
+	double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+	for (const auto& s : series)
+	{
+		if (s.x.size() != s.y.size())
+			failInput("series plot", "series '" + s.name + "' has " + std::to_string(s.x.size()) + " x values but " +
+					std::to_string(s.y.size()) + " y values");
+		for (size_t i = 0; i < s.x.size(); ++i)
+			if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+			{
+				x0 = std::min(x0, s.x[i]), x1 = std::max(x1, s.x[i]);
+				y0 = std::min(y0, s.y[i]), y1 = std::max(y1, s.y[i]);
+			}
+	}
+	if (!(x1 >= x0)) failInput("series plot", "nothing to plot (no finite sample)");
+	if (style.reference_y) y0 = std::min(y0, *style.reference_y), y1 = std::max(y1, *style.reference_y);
+	if (x1 - x0 < 1e-9) x0 -= 0.5, x1 += 0.5;
+	const double ypad = std::max(0.05 * (y1 - y0), 1e-6 * std::max(1.0, std::abs(y0)));
+	PlotArea a;
+	const int top = topMargin(style);
+	a.rect = cv::Rect(kLeft, top, style.width - kLeft - kRight, style.height - top - kBottom);
+	if (a.rect.width < 100 || a.rect.height < 60) failInput("series plot", "image size too small");
+	a.xmin = x0, a.xmax = x1;
+	a.ymin = style.ymin.value_or(y0 - ypad), a.ymax = style.ymax.value_or(y1 + ypad);
+	if (!(a.ymax > a.ymin)) failInput("series plot", "empty y range");
+	return a;
+}
+
+cv::Mat drawSeries(const std::vector<Series>& series, const SeriesStyle& style)
+{
+	const PlotArea a = seriesArea(series, style);
+	cv::Mat img(style.height, style.width, CV_8UC3, canvas::kWhite);
+	const double xstep = niceStep((a.xmax - a.xmin) / std::max(2.0, a.rect.width / 110.0));
+	const double ystep = niceStep((a.ymax - a.ymin) / std::max(2.0, a.rect.height / 60.0));
+	canvas::axes(img, a, xstep, ystep, style.xlabel, style.ylabel);
+	if (!style.title.empty())
+		canvas::text(img, style.title, {style.width / 2, 18}, canvas::kLarge, canvas::kInk, canvas::HAlign::Center,
+			canvas::VAlign::Top, 2);
+	cv::Mat plot = img(a.rect);
+	const cv::Point2d off(-a.rect.x, -a.rect.y);
+	if (style.reference_y)
+	{
+		const int y = int(std::lround(a.toPixel(0, *style.reference_y).y + off.y));
+		dashedLine(plot, {0, y}, {a.rect.width, y}, canvas::kInk);
+	}
+	std::vector<canvas::LegendItem> items;
+	std::vector<cv::Point2d> all;
+	for (size_t k = 0; k < series.size(); ++k)
+	{
+		const auto& s = series[k];
+		const cv::Scalar c = canvas::bgr(s.color.value_or(paletteColor(k)));
+		std::vector<cv::Point2d> run;  // consecutive finite samples
+		auto flush = [&] {
+			if (!run.empty() && s.line) canvas::polyline(plot, run, c, 2);
+			run.clear();
+		};
+		for (size_t i = 0; i < s.x.size(); ++i)
+		{
+			if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]))
+			{
+				flush();
+				continue;
+			}
+			const cv::Point2d p = a.toPixel(s.x[i], s.y[i]);
+			all.push_back(p);
+			run.push_back(p + off);
+			if (s.markers) cv::circle(plot, canvas::round(p + off), 3, c, cv::FILLED, cv::LINE_AA);
+		}
+		flush();
+		items.push_back({s.line ? canvas::LegendItem::Line : canvas::LegendItem::Dot, s.name,
+			s.color.value_or(paletteColor(k)), s.line ? 2 : 4});
+	}
+	if (!items.empty() && !(series.size() == 1 && series[0].name.empty()))
+		canvas::legend(img, canvas::emptiestCorner(a.rect, canvas::legendSize(items), all), items);
+	return img;
+}
+
+void renderSeries(const std::vector<Series>& series, const std::string& png, const SeriesStyle& style)
+{
+	writePng(png, drawSeries(series, style));
+}
+}  // namespace vlo

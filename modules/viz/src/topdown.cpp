@@ -1,0 +1,158 @@
+#include <vlo/core/error.h>
+#include <vlo/viz/png.h>
+#include <vlo/viz/topdown.h>
+
+#include "canvas.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace vlo
+{
+namespace
+{
+constexpr int kLeft = 95, kRight = 30, kBottom = 80;
+int topMargin(const TopDownStyle& s) { return s.title.empty() ? 30 : 60; }
+
+std::vector<cv::Point2d> pixels(const Trajectory& t, const PlotArea& a)
+{
+	std::vector<cv::Point2d> px;
+	px.reserve(t.size());
+	for (const auto& p : t) px.push_back(a.toPixel(p.pose.translation().x(), p.pose.translation().y()));
+	return px;
+}
+
+std::string lengthText(double metres)
+{
+	char buf[32];
+	if (metres >= 10000)
+		std::snprintf(buf, sizeof buf, "%.1f km", metres / 1000);
+	else
+		std::snprintf(buf, sizeof buf, "%.0f m", metres);
+	return buf;
+}
+
+std::string roundLengthText(double metres)
+{
+	char buf[32];
+	if (metres >= 1000)
+		std::snprintf(buf, sizeof buf, "%g km", metres / 1000);
+	else
+		std::snprintf(buf, sizeof buf, "%g m", metres);
+	return buf;
+}
+
+void startEndMarkers(cv::Mat& img, const std::vector<cv::Point2d>& px, Rgb color)
+{
+	if (px.empty()) return;
+	const cv::Point s = canvas::round(px.front()), e = canvas::round(px.back());
+	// Start rings are neutral: every trajectory starts at the origin, so colours would hide each other.
+	cv::circle(img, s, 7, canvas::kWhite, cv::FILLED, cv::LINE_AA);
+	cv::circle(img, s, 7, canvas::kInk, 2, cv::LINE_AA);
+	const cv::Rect sq(e.x - 6, e.y - 6, 13, 13);
+	cv::rectangle(img, sq, canvas::bgr(color), cv::FILLED);
+	cv::rectangle(img, sq, canvas::kInk, 1);
+}
+
+/// Round-length bar in metres, boxed, at `tl`.
+void scaleBar(cv::Mat& img, cv::Point tl, cv::Size box, int barPx, const std::string& label)
+{
+	cv::Mat roi = img(cv::Rect(tl, box));
+	roi.convertTo(roi, -1, 0.15, 255 * 0.85);
+	const int x0 = tl.x + (box.width - barPx) / 2, y = tl.y + box.height - 14;
+	cv::rectangle(img, cv::Rect(x0, y - 4, barPx, 6), canvas::kInk, cv::FILLED);
+	cv::line(img, {x0, y - 10}, {x0, y + 2}, canvas::kInk, 2);
+	cv::line(img, {x0 + barPx - 1, y - 10}, {x0 + barPx - 1, y + 2}, canvas::kInk, 2);
+	canvas::text(img, label, {tl.x + box.width / 2, y - 14}, canvas::kMedium, canvas::kInk, canvas::HAlign::Center);
+}
+}  // namespace
+
+PlotArea topDownArea(const std::vector<NamedTrajectory>& trajs, const Trajectory* gt, const TopDownStyle& style)
+{
+	double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+	auto grow = [&](const Trajectory& t) {
+		for (const auto& p : t)
+		{
+			const auto& v = p.pose.translation();
+			x0 = std::min(x0, v.x()), x1 = std::max(x1, v.x()), y0 = std::min(y0, v.y()), y1 = std::max(y1, v.y());
+		}
+	};
+	for (const auto& t : trajs) grow(t.traj);
+	if (gt) grow(*gt);
+	if (!(x1 >= x0)) failInput("top-down view", "no poses to draw (all trajectories are empty)");
+
+	PlotArea a;
+	const int top = topMargin(style);
+	a.rect = cv::Rect(kLeft, top, style.width - kLeft - kRight, style.height - top - kBottom);
+	if (a.rect.width < 100 || a.rect.height < 100) failInput("top-down view", "image size too small");
+	// Equal aspect: fit the larger relative extent (plus 5% padding), widen the other to fill.
+	const double span = std::max({x1 - x0, y1 - y0, 1.0}) * 1.10;
+	const double ppm = std::min(a.rect.width / std::max(x1 - x0 + 0.1 * span, 1.0),
+		a.rect.height / std::max(y1 - y0 + 0.1 * span, 1.0));
+	const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+	a.xmin = cx - 0.5 * a.rect.width / ppm, a.xmax = cx + 0.5 * a.rect.width / ppm;
+	a.ymin = cy - 0.5 * a.rect.height / ppm, a.ymax = cy + 0.5 * a.rect.height / ppm;
+	return a;
+}
+
+cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory* gt, const TopDownStyle& style)
+{
+	const PlotArea a = topDownArea(trajs, gt, style);
+	cv::Mat img(style.height, style.width, CV_8UC3, canvas::kWhite);
+	const double step = niceStep((a.xmax - a.xmin) / std::max(2.0, a.rect.width / 130.0));
+	canvas::axes(img, a, step, step, "x [m]  (forward at the first frame)", "y [m]  (left at the first frame)");
+	if (!style.title.empty())
+		canvas::text(img, style.title, {style.width / 2, 18}, canvas::kLarge, canvas::kInk, canvas::HAlign::Center,
+			canvas::VAlign::Top, 2);
+
+	std::vector<canvas::LegendItem> items;
+	std::vector<cv::Point2d> all;  // every drawn pixel position, to keep boxes off the data
+	cv::Mat plot = img(a.rect);  // clip lines to the plot area
+	const cv::Point2d off(-a.rect.x, -a.rect.y);
+	auto draw = [&](const Trajectory& t, Rgb c, int width) {
+		auto px = pixels(t, a);
+		all.insert(all.end(), px.begin(), px.end());
+		for (auto& p : px) p += off;
+		if (!px.empty()) canvas::polyline(plot, px, canvas::bgr(c), width);
+		return px;
+	};
+	auto label = [&](const std::string& name, const Trajectory& t) {
+		if (t.empty()) return name + "  (empty)";
+		return style.show_lengths ? name + "  (" + lengthText(pathLength(t)) + ")" : name;
+	};
+	std::vector<std::pair<std::vector<cv::Point2d>, Rgb>> markers;
+	if (gt)
+	{
+		markers.push_back({draw(*gt, kGroundTruthColor, style.line_width + 3), kGroundTruthColor});
+		items.push_back({canvas::LegendItem::Line, label(style.gt_name, *gt), kGroundTruthColor, style.line_width + 3});
+	}
+	for (size_t i = 0; i < trajs.size(); ++i)
+	{
+		const Rgb c = trajs[i].color.value_or(paletteColor(i));
+		markers.push_back({draw(trajs[i].traj, c, style.line_width), c});
+		items.push_back({canvas::LegendItem::Line, label(trajs[i].name, trajs[i].traj), c, style.line_width + 1});
+	}
+	for (const auto& [px, c] : markers) startEndMarkers(plot, px, c);
+	items.push_back({canvas::LegendItem::Ring, "start", Rgb{40, 40, 40}});
+	items.push_back({canvas::LegendItem::Square, "end", Rgb{200, 200, 200}});
+
+	const cv::Size lsz = canvas::legendSize(items);
+	const cv::Point ltl = canvas::emptiestCorner(a.rect, lsz, all);
+	canvas::legend(img, ltl, items);
+
+	const double barM = niceStep((a.xmax - a.xmin) * 0.18);
+	const int barPx = int(std::lround(barM * a.pixelsPerUnitX()));
+	const cv::Size bsz(barPx + 40, 52);
+	scaleBar(img, canvas::emptiestCorner(a.rect, bsz, all, cv::Rect(ltl, lsz)), bsz, barPx, roundLengthText(barM));
+	return img;
+}
+
+void renderTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory* gt, const std::string& png,
+	const TopDownStyle& style)
+{
+	writePng(png, drawTopDown(trajs, gt, style));
+}
+}  // namespace vlo

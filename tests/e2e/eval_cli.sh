@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# vlo-eval end to end: JSON keys and values on constructed trajectories, and bad input
+# (one line on stderr, non-zero exit, no JSON left behind).
+set -u
+EVAL="${VLO_BIN:?}/vlo-eval"
+W="${VLO_WORK:?}"
+rm -rf "$W" && mkdir -p "$W" && cd "$W" || exit 1
+fails=0
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+
+# key value from a JSON file written by vlo-eval (one key per line)
+jv() { grep -o "\"$2\": [^,]*" "$1" | head -1 | cut -d' ' -f2-; }
+# near ACTUAL EXPECTED TOL
+near() { awk -v a="$1" -v e="$2" -v t="$3" 'BEGIN { d = a - e; if (d < 0) d = -d; exit !(a != "" && d <= t) }'; }
+expect_near() { near "$(jv "$1" "$2")" "$3" "$4" || fail "$1: $2 = $(jv "$1" "$2"), expected $3 +- $4"; }
+expect_eq() { [ "$(jv "$1" "$2")" = "$3" ] || fail "$1: $2 = $(jv "$1" "$2"), expected $3"; }
+
+# N poses 0.9 m apart along x, 10 Hz, every EVERY-th one, positions scaled by S; yaw rate W rad/frame.
+make_tum() { # N EVERY S W OUT
+	awk -v n="$1" -v every="$2" -v s="$3" -v w="$4" 'BEGIN {
+		x = 0; y = 0; yaw = 0
+		for (i = 0; i < n; i++) {
+			if (i % every == 0) printf "%.6f %.9f %.9f 0 0 0 %.12f %.12f\n", i * 0.1, s * x, s * y, sin(yaw / 2), cos(yaw / 2)
+			x += 0.9 * cos(yaw); y += 0.9 * sin(yaw); yaw += w
+		}
+	}' > "$5"
+}
+
+# expect_bad NAME EXPECTED_TEXT ARGS...: non-zero exit, one stderr line containing the text, no JSON
+expect_bad() {
+	local name="$1" text="$2"
+	shift 2
+	rm -f bad.json bad.json.partial
+	"$EVAL" "$@" --json bad.json > /dev/null 2> err.txt
+	local rc=$?
+	[ $rc -ne 0 ] || fail "$name: exit code 0"
+	[ "$(wc -l < err.txt)" -eq 1 ] || fail "$name: stderr is not one line: $(cat err.txt)"
+	grep -qF -- "$text" err.txt || fail "$name: stderr lacks '$text': $(cat err.txt)"
+	[ ! -e bad.json ] && [ ! -e bad.json.partial ] || fail "$name: JSON left behind"
+	echo "ok (rc $rc): $name: $(cat err.txt)"
+}
+
+"$EVAL" --help | grep -q -- "--kitti-calib" || fail "--help"
+
+# 1. Straight 1349 m drive, estimate 5 % too long, 1 Hz ground truth: Sim(3) removes the scale;
+#    KITTI t_err is 5 % times the devkit's overshoot factor (see test_kitti_metric.cpp).
+make_tum 1500 10 1 0 gt1hz.tum
+make_tum 1500 1 1.05 0 est.tum
+"$EVAL" --gt gt1hz.tum --est est.tum --align sim3 --json scaled.json > scaled.txt || fail "scaled: exit code"
+cat scaled.txt
+expect_eq scaled.json n_matched 1491   # the last 9 estimates are after the last 1 Hz sample
+expect_near scaled.json ate_rmse_m 0 1e-6
+expect_near scaled.json are_rmse_deg 0 1e-4
+expect_near scaled.json sim3_scale 0.952380952 1e-6
+expect_near scaled.json kitti_t_err_pct 5.015 0.01
+expect_near scaled.json kitti_r_err_deg_per_m 0 1e-6
+grep -q '"kitti_r_err_deg_per_100m": ' scaled.json || fail "kitti_r_err_deg_per_100m missing"
+"$EVAL" --gt gt1hz.tum --est est.tum --align sim3 --write-aligned aligned.tum > /dev/null || fail "write-aligned: exit code"
+[ "$(wc -l < aligned.tum)" -eq 1491 ] || fail "aligned.tum should hold the 1491 matched poses"
+# aligned pose 1000 (t = 100 s) lies on the ground truth's x = 900 m
+awk 'NR == 1001 { d = $2 - 900; if (d < 0) d = -d; exit !(d < 1e-4) }' aligned.tum || fail "aligned.tum: $(sed -n 1001p aligned.tum)"
+"$EVAL" --gt gt1hz.tum --est est.tum --align se3 --metric ate --json se3.json > /dev/null || fail "se3: exit code"
+near "$(jv se3.json ate_rmse_m)" 10 40 || fail "se3 ATE of a 5 % scaled 1.3 km line should be metres: $(jv se3.json ate_rmse_m)"
+expect_eq se3.json kitti_t_err_pct null
+
+# 2. Identical curved trajectories: zero everywhere; rig given as 12 numbers.
+make_tum 1500 1 1 0.002 curve.tum
+"$EVAL" --gt curve.tum --est curve.tum --cam0-T-vehicle "0 -1 0 0, 0 0 -1 -0.08, 1 0 0 -0.27" --json same.json > /dev/null \
+	|| fail "identical: exit code"
+for k in ate_rmse_m kitti_t_err_pct; do expect_near same.json $k 0 1e-6; done
+expect_near same.json kitti_r_err_deg_per_m 0 1e-5
+grep -q '"kitti_frame": "camera 0"' same.json || fail "kitti_frame should be camera 0"
+
+# 3. Short trajectory: KITTI null with the reason, ATE still there; translation-only ground truth.
+make_tum 60 1 1 0.01 short.tum
+"$EVAL" --gt short.tum --est short.tum --json short.json > short.txt || fail "short: exit code"
+expect_eq short.json kitti_t_err_pct null
+expect_eq short.json kitti_segments 0
+grep -q '"kitti_note": "no segment' short.json || fail "short: no kitti_note"
+grep -q "n/a: no segment" short.txt || fail "short: table lacks the reason"
+make_tum 60 1 1 0 short_straight.tum
+"$EVAL" --gt short_straight.tum --est short.tum --gt-translation-only --json tonly.json > /dev/null || fail "translation-only: exit"
+expect_eq tonly.json are_rmse_deg null
+grep -q '"ate_rmse_m": [0-9]' tonly.json || fail "translation-only: ATE missing"
+
+# 4. Bad input.
+printf '0 0 0 0 0 0 0 1\n0.1 nan 0 0 0 0 0 1\n' > nan.tum
+printf '0 0 0 0 0 0 0 1\n0.1 1 0 0 0 0 1\n' > short_line.tum
+awk '{ $1 = $1 + 1000; print }' curve.tum > later.tum
+printf 'P0: 1 0 0 0 0 1 0 0 0 0 1 0\n' > calib_no_tr.txt
+expect_bad "missing file" "no-such.tum: cannot open file" --gt no-such.tum --est est.tum
+expect_bad "NaN value" "nan.tum: line 2" --gt curve.tum --est nan.tum
+expect_bad "short line" "short_line.tum: line 2: expected 8 numbers" --gt short_line.tum --est curve.tum
+expect_bad "no overlap" "no pose overlaps the ground truth" --gt curve.tum --est later.tum
+expect_bad "bad alignment" "unknown alignment 'sim2'" --gt curve.tum --est curve.tum --align sim2
+expect_bad "bad metric" "unknown metric" --gt curve.tum --est curve.tum --metric rpe
+expect_bad "calib without Tr" "calib_no_tr.txt: missing key 'Tr'" --gt curve.tum --est curve.tum --kitti-calib calib_no_tr.txt
+expect_bad "bad rig" "expected 12 numbers" --gt curve.tum --est curve.tum --cam0-T-vehicle "1 0 0"
+expect_bad "missing --est" "missing required option '--est'" --gt curve.tum
+"$EVAL" --gt curve.tum --est curve.tum --json no-such-dir/x.json > /dev/null 2> err.txt && fail "unwritable JSON: exit 0"
+[ ! -e no-such-dir ] || fail "unwritable JSON: created something"
+
+[ $fails -eq 0 ] && echo "eval_cli: all passed" || echo "eval_cli: $fails failure(s)"
+[ $fails -eq 0 ]

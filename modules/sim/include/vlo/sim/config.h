@@ -1,0 +1,55 @@
+#pragma once
+// What to simulate: scenario, sensors and their placement, noise, length, seed.
+#include <vlo/core/frame.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vlo::sim
+{
+enum class Scenario
+{
+	Urban,  ///< buildings, parked cars, poles, trees, walls along a road with bends and slopes
+	Trees,  ///< a winding road with only trees and ground: few planes, hard for LOAM
+	Corridor  ///< urban, then a long straight between smooth textured walls, then urban again
+};
+/// "urban" | "trees" | "corridor"; InputError otherwise.
+Scenario parseScenario(const std::string& name);
+std::string scenarioName(Scenario s);
+
+/// A spinning multi-beam LiDAR.
+struct LidarModel
+{
+	std::string name;
+	std::vector<double> elevations_deg;  ///< one per beam (ring), top to bottom
+	int azimuth_steps = 2000;  ///< firings per revolution
+	double min_range = 1.0, max_range = 100.0;  ///< m
+	double period = 0.1;  ///< s per revolution
+};
+LidarModel hdl64();  ///< 64 beams +2 .. -24.8 deg, 0.17 deg azimuth (KITTI's sensor)
+LidarModel vlp16();  ///< 16 beams +-15 deg, 0.2 deg azimuth
+/// "hdl64" | "vlp16"; InputError otherwise.
+LidarModel lidarByName(const std::string& name);
+
+/// KITTI-like rig: camera 0 intrinsics (1241x376, f 718.856), camera 1.65 m and LiDAR 1.73 m above
+/// the ground; the vehicle frame sits on the ground below the rear axle, so both extrinsics have a
+/// lever arm and a small rotation.
+SensorRig defaultRig();
+
+struct SimConfig
+{
+	Scenario scenario = Scenario::Urban;
+	LidarModel lidar = hdl64();
+	SensorRig rig = defaultRig();
+	int frames = 100;
+	uint64_t seed = 1;
+	double rate_hz = 10;  ///< camera and LiDAR frames per second
+	bool lidar_distortion = false;  ///< each firing at its own time (see doc/SIMULATOR.md)
+	double range_noise = 0.02;  ///< m, 1 sigma
+	double image_noise = 2.0;  ///< gray levels, 1 sigma
+	double dropout = 0.005;  ///< probability that a return is lost
+	/// KITTI camera-0 poses to drive along instead of a generated drive ("" = generate).
+	std::string kitti_poses;
+};
+}  // namespace vlo::sim

@@ -1,0 +1,60 @@
+#pragma once
+// The spinning LiDAR, sampled from rendered depth: 8 pinhole views around the sensor (9 with motion
+// distortion: the sector behind is rendered at both the start and the end of the sweep). Each beam
+// looks up its pixel, fits the local surface plane from inverse depth (exact for planes, one-sided
+// at depth edges so no "flying" points appear between objects) and intersects the beam with it.
+//
+// Timing: the sweep of a frame at time t spans [t - T/2, t + T/2] (T = 0.1 s), starting and ending
+// behind the vehicle and spinning clockwise seen from above, so the forward firing happens at t, when
+// the camera is triggered (as in KITTI). A firing at azimuth phi (LiDAR frame, counter-clockwise from
+// x, in (-pi, pi]) happens at t + tau(phi), tau = -phi / (2 pi) * T. Without distortion every firing
+// uses the pose at t; with it, each point is in the LiDAR frame at its own firing time.
+#include <vlo/core/frame.h>
+#include <vlo/sim/config.h>
+#include <vlo/sim/renderer.h>
+
+#include <functional>
+
+namespace vlo::sim
+{
+class Rng;
+
+struct LidarNoise
+{
+	double range_sigma = 0.02;  ///< m
+	double dropout = 0.005;  ///< probability of a lost return
+};
+
+class LidarSim
+{
+   public:
+	LidarSim(const LidarModel& model, bool distortion);
+	const LidarModel& model() const { return model_; }
+	int viewCount() const { return static_cast<int>(views_.size()); }
+	std::pair<int, int> tileSize() const { return {K_.width, K_.height}; }
+	/// Firing time offset tau(phi) in seconds.
+	double firingTime(double azimuth) const;
+
+	using PoseAt = std::function<Eigen::Isometry3d(double tau)>;  ///< world_T_lidar at t + tau
+	/// The views to render for one sweep.
+	std::vector<View> views(const PoseAt& world_T_lidar) const;
+	/// Points (LiDAR frame, firing order: azimuth-major) from the rendered views.
+	PointCloud sample(const std::vector<RenderedView>& tiles, const std::vector<View>& views, const PoseAt& world_T_lidar,
+		const LidarNoise& noise, Rng& rng) const;
+
+   private:
+	struct ViewDef
+	{
+		double yaw;  // centre azimuth
+		double tau;  // render time offset
+		Eigen::Matrix3d R;  // LiDAR_R_view (optical frame)
+	};
+	LidarModel model_;
+	bool distortion_;
+	PinholeCamera K_;
+	std::vector<ViewDef> views_;
+	std::vector<Eigen::Vector3d> dirs_;  // per beam (ring-minor), LiDAR frame
+	std::vector<int> viewOf_;  // per azimuth column
+	double azimuthOf(int column) const;
+};
+}  // namespace vlo::sim

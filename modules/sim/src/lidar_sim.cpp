@@ -1,0 +1,106 @@
+#include "depth_lookup.h"
+
+#include <vlo/sim/lidar_sim.h>
+#include <vlo/sim/rng.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vlo::sim
+{
+namespace
+{
+constexpr double kDeg = M_PI / 180;
+constexpr double kHalfSector = 22.5 * kDeg;
+constexpr double kMargin = 1.5 * kDeg;
+
+Eigen::Matrix3d opticalAlong(double yaw)
+{
+	Eigen::Matrix3d optical;  // optical axes in a frame with x forward, y left, z up
+	optical << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+	return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * optical;
+}
+
+double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+}  // namespace
+
+LidarSim::LidarSim(const LidarModel& model, bool distortion) : model_(model), distortion_(distortion)
+{
+	// Square pixels 0.8x the azimuth step at the view centre; tall enough for all beams at the edges.
+	const double step = 2 * M_PI / model_.azimuth_steps, f = 1.0 / (0.8 * step);
+	const double a = kHalfSector + kMargin;
+	const double top = *std::max_element(model_.elevations_deg.begin(), model_.elevations_deg.end()) * kDeg + kMargin;
+	const double bot = *std::min_element(model_.elevations_deg.begin(), model_.elevations_deg.end()) * kDeg - kMargin;
+	const double yTop = std::min(-f * std::tan(top), -f * std::tan(top) / std::cos(a));
+	const double yBot = std::max(-f * std::tan(bot), -f * std::tan(bot) / std::cos(a));
+	K_.fx = K_.fy = f;
+	K_.width = 2 * static_cast<int>(std::ceil(f * std::tan(a))) + 4;
+	K_.cx = (K_.width - 1) / 2.0;
+	K_.cy = std::ceil(-yTop) + 2;
+	K_.height = static_cast<int>(std::ceil(yBot - yTop)) + 5;
+	for (int i = 0; i < 8; ++i)
+	{
+		const double yaw = wrap(i * 2 * kHalfSector);
+		views_.push_back({yaw, distortion_ ? firingTime(yaw) : 0.0, opticalAlong(yaw)});
+	}
+	if (distortion_)  // the sector behind: view 4 at the start of the sweep, view 8 at its end
+		views_[4].tau = -model_.period / 2, views_.push_back({M_PI, model_.period / 2, opticalAlong(M_PI)});
+	for (int c = 0; c < model_.azimuth_steps; ++c)
+	{
+		const double phi = azimuthOf(c);
+		for (double el : model_.elevations_deg)
+			dirs_.emplace_back(std::cos(el * kDeg) * std::cos(phi), std::cos(el * kDeg) * std::sin(phi), std::sin(el * kDeg));
+		int v = static_cast<int>(std::lround((phi < 0 ? phi + 2 * M_PI : phi) / (2 * kHalfSector))) % 8;
+		if (distortion_ && v == 4 && phi < 0) v = 8;
+		viewOf_.push_back(v);
+	}
+}
+
+double LidarSim::azimuthOf(int column) const { return M_PI - (column + 0.5) * 2 * M_PI / model_.azimuth_steps; }
+
+double LidarSim::firingTime(double azimuth) const { return -wrap(azimuth) / (2 * M_PI) * model_.period; }
+
+std::vector<View> LidarSim::views(const PoseAt& world_T_lidar) const
+{
+	std::vector<View> out;
+	for (const ViewDef& d : views_)
+	{
+		View v;
+		v.world_T_cam = world_T_lidar(d.tau);
+		v.world_T_cam.linear() = v.world_T_cam.linear() * d.R;
+		v.K = K_;
+		v.znear = 1.0, v.zfar = model_.max_range + 10;
+		out.push_back(v);
+	}
+	return out;
+}
+
+PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::vector<View>& views, const PoseAt& world_T_lidar,
+	const LidarNoise& noise, Rng& rng) const
+{
+	PointCloud cloud;
+	cloud.reserve(dirs_.size());
+	const int rings = static_cast<int>(model_.elevations_deg.size());
+	for (int c = 0; c < model_.azimuth_steps; ++c)
+	{
+		const int vi = viewOf_[c];
+		// Beam origin and rotation in the view's optical frame (identity motion without distortion).
+		Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+		T.linear() = views_[vi].R.transpose();
+		if (distortion_) T = views[vi].world_T_cam.inverse() * world_T_lidar(firingTime(azimuthOf(c)));
+		const DepthLookup look(tiles[vi], K_);
+		for (int j = 0; j < rings; ++j)
+		{
+			const Eigen::Vector3d& dL = dirs_[static_cast<std::size_t>(c) * rings + j];
+			double r = 0;
+			uint8_t gray = 0;
+			if (!look.intersect(T.translation(), T.linear() * dL, r, gray)) continue;
+			const double noisy = r + noise.range_sigma * rng.normal();
+			if (rng.uniform() < noise.dropout || noisy < model_.min_range || noisy > model_.max_range) continue;
+			const Eigen::Vector3d p = noisy * dL;
+			cloud.push_back({float(p.x()), float(p.y()), float(p.z()), static_cast<float>(gray / 255.0)});
+		}
+	}
+	return cloud;
+}
+}  // namespace vlo::sim

@@ -1,0 +1,56 @@
+#pragma once
+// Shared state while populating a world: textures, free space, and frames along the road.
+#include <vlo/sim/rng.h>
+#include <vlo/sim/road.h>
+#include <vlo/sim/street.h>
+#include <vlo/sim/world.h>
+
+#include <Eigen/Geometry>
+#include <unordered_set>
+#include <vector>
+
+namespace vlo::sim
+{
+struct TexturePool
+{
+	GroundTextures ground;
+	std::vector<int> facades, bodies, cabins, barks, foliages, signs, walls, murals;
+	int roof = -1, pole = -1;
+};
+
+class Placer
+{
+   public:
+	Placer(World& w, const Road& road, const CrossSection& cs, uint64_t seed, const char* purpose)
+		: world(w), road(road), cs(cs), rng(Rng::stream(seed, purpose))
+	{
+	}
+	World& world;
+	const Road& road;
+	CrossSection cs;
+	Rng rng;
+	TexturePool tex;
+
+	/// Frame at arc length s, `lateral` to the left, on the road surface, x along the road, turned by yaw.
+	Eigen::Isometry3d frameAt(double s, double lateral, double yaw = 0) const;
+	/// True if a footprint sx x sy (centred on the frame) keeps `clear` metres from every part of the
+	/// road's centre line and overlaps nothing placed before.
+	bool fits(const Eigen::Isometry3d& f, double sx, double sy, double clear) const;
+	void occupy(const Eigen::Isometry3d& f, double sx, double sy);
+	bool occupied(const Eigen::Vector2d& p) const;
+	template <class V>
+	int pick(const V& ids)
+	{
+		return ids[rng.integer(0, static_cast<int>(ids.size()) - 1)];
+	}
+
+   private:
+	std::unordered_set<int64_t> cells_;  // 0.5 m cells
+	template <class F>
+	bool forFootprint(const Eigen::Isometry3d& f, double sx, double sy, F&& fn) const;
+};
+
+void buildUrbanSide(Placer& p, double side, double s0, double s1, double skip_from, double skip_to);
+void buildCorridorWalls(Placer& p, double s0, double s1);
+void buildTreesSide(Placer& p, double side, double s0, double s1);
+}  // namespace vlo::sim

@@ -1,0 +1,177 @@
+#include <vlo/core/error.h>
+#include <vlo/sim/camera_sim.h>
+#include <vlo/sim/lidar_sim.h>
+#include <vlo/sim/renderer.h>
+#include <vlo/sim/rng.h>
+#include <vlo/sim/scenarios.h>
+#include <vlo/sim/simulator.h>
+
+#include <mrpt/opengl/COpenGLScene.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <sstream>
+
+namespace vlo::sim
+{
+namespace
+{
+constexpr double kBehind = 120;  // road before the start (the LiDAR sees 100 m back)
+constexpr double kAhead = 180;  // road after the end (the camera sees up to 160 m)
+
+RoadStyle styleFor(Scenario sc)
+{
+	RoadStyle st;
+	if (sc == Scenario::Trees)
+		st.max_curvature = 1 / 45.0, st.min_curvature = 1 / 300.0, st.straight_fraction = 0.15, st.grade_amplitude = 0.05;
+	return st;
+}
+
+/// KITTI camera-0 poses -> vehicle poses in a world whose origin is the vehicle at frame 0.
+Trajectory vehicleFromKitti(const std::string& path, int frames, double rate, const SensorRig& rig)
+{
+	const Trajectory cam = readKittiPoses(path);
+	if (static_cast<int>(cam.size()) < frames)
+		failInput(path, "has " + std::to_string(cam.size()) + " poses, fewer than --frames " + std::to_string(frames));
+	const Eigen::Isometry3d VC = rig.vehicle_T_camera, C0inv = cam.front().pose.inverse();
+	Trajectory out;
+	for (int k = 0; k < frames; ++k) out.push_back({k / rate, VC * C0inv * cam[k].pose * VC.inverse()});
+	return out;
+}
+
+/// The road and how the vehicle moves along it.
+struct Drive
+{
+	Road road;
+	VehicleMotion motion;
+	double corridor_from = 0, corridor_to = 0;  ///< arc lengths of the corridor's walls
+};
+
+/// Road and motion along KITTI camera-0 poses.
+Drive kittiDrive(const SimConfig& cfg)
+{
+	Drive d;
+	if (cfg.scenario == Scenario::Corridor)
+		failInput("--scenario corridor", "needs a generated drive (its long straight), not --trajectory");
+	Trajectory v = vehicleFromKitti(cfg.kitti_poses, cfg.frames, cfg.rate_hz, cfg.rig);
+	// The road's centre line runs 1.75 m to the left of the vehicle (it drives in the right lane).
+	std::vector<Eigen::Vector3d> centre;
+	for (const auto& p : v) centre.push_back(p.pose * Eigen::Vector3d(0, -kLaneOffset, 0));
+	d.road = roadThrough(centre, kAhead);
+	if (v.size() == 1) v.push_back({v[0].t + 1 / cfg.rate_hz, v[0].pose});  // a parked vehicle
+	d.motion = VehicleMotion(std::move(v));
+	return d;
+}
+
+/// Random road and drive; the road is sized for the planned distance.
+Drive generatedDrive(const SimConfig& cfg)
+{
+	Drive d;
+	const double duration = (cfg.frames - 1) / cfg.rate_hz + 0.2;
+	DriveStyle ds;
+	if (cfg.scenario == Scenario::Corridor) ds.v_min = 8, ds.v_max = 12;
+	if (cfg.scenario == Scenario::Trees) ds.v_min = 7;
+	const double dist = plannedDistance(ds, duration, cfg.seed);
+	RoadStyle st = styleFor(cfg.scenario);
+	if (cfg.scenario == Scenario::Corridor)
+	{
+		// Entered after a quarter of the drive; left after three quarters, but never shorter than
+		// 150 m so that even a short drive is degenerate for LiDAR inside it.
+		d.corridor_from = kBehind + 0.25 * dist, d.corridor_to = kBehind + std::max(0.75 * dist, 0.25 * dist + 150);
+		st.straight_from = d.corridor_from - 15, st.straight_to = d.corridor_to + 15;
+	}
+	Rng rng = Rng::stream(cfg.seed, "road");
+	d.road = generateRoad(st, kBehind + dist + kAhead, rng);
+	d.motion = driveAlong(d.road, ds, kBehind, duration, cfg.seed);
+	return d;
+}
+}  // namespace
+
+struct Simulator::Impl
+{
+	SimConfig cfg;
+	Drive drive;
+	World world;
+	mrpt::opengl::COpenGLScene scene;
+	std::unique_ptr<CameraSim> camera;
+	std::unique_ptr<LidarSim> lidar;
+	std::unique_ptr<Renderer> renderer;
+};
+
+Simulator::Simulator(const SimConfig& cfg) : impl_(std::make_unique<Impl>())
+{
+	auto& d = *impl_;
+	d.cfg = cfg;
+	if (cfg.frames < 1) failInput("--frames", "must be at least 1");
+	d.drive = cfg.kitti_poses.empty() ? generatedDrive(cfg) : kittiDrive(cfg);
+	WorldSpec spec;
+	spec.scenario = cfg.scenario, spec.seed = cfg.seed;
+	spec.corridor_from = d.drive.corridor_from, spec.corridor_to = d.drive.corridor_to;
+	d.world = buildWorld(spec, d.drive.road);
+
+	d.scene.insert(d.world.makeOpenGL());
+	auto vp = d.scene.getViewport("main");
+	vp->setCustomBackgroundColor(mrpt::img::TColorf(0.80f, 0.82f, 0.86f, 1.0f));  // overcast sky
+
+	d.camera = std::make_unique<CameraSim>(cfg.rig.camera);
+	d.lidar = std::make_unique<LidarSim>(cfg.lidar, cfg.lidar_distortion);
+	std::vector<std::pair<int, int>> tiles{d.camera->tileSize()};
+	for (int i = 0; i < d.lidar->viewCount(); ++i) tiles.push_back(d.lidar->tileSize());
+	d.renderer = std::make_unique<Renderer>(tiles);
+}
+
+Simulator::~Simulator() = default;
+const SimConfig& Simulator::config() const { return impl_->cfg; }
+int Simulator::frameCount() const { return impl_->cfg.frames; }
+double Simulator::frameTime(int k) const { return k / impl_->cfg.rate_hz; }
+Eigen::Isometry3d Simulator::vehiclePoseAt(double t) const { return impl_->drive.motion.pose(t); }
+Eigen::Isometry3d Simulator::vehiclePose(int k) const { return vehiclePoseAt(frameTime(k)); }
+const World& Simulator::world() const { return impl_->world; }
+const Road& Simulator::road() const { return impl_->drive.road; }
+
+Trajectory Simulator::groundTruth() const
+{
+	Trajectory gt;
+	for (int k = 0; k < frameCount(); ++k) gt.push_back({frameTime(k), vehiclePose(k)});
+	return relativeToFirst(gt);
+}
+
+Frame Simulator::frame(int k, RenderedView* camera_depth)
+{
+	auto& d = *impl_;
+	const double t = frameTime(k);
+	const SensorRig& rig = d.cfg.rig;
+	const LidarSim::PoseAt lidarAt = [&](double tau) { return Eigen::Isometry3d(d.drive.motion.pose(t + tau) * rig.vehicle_T_lidar); };
+	std::vector<View> views{d.camera->view(d.drive.motion.pose(t) * rig.vehicle_T_camera)};
+	for (const View& v : d.lidar->views(lidarAt)) views.push_back(v);
+	std::vector<RenderedView> tiles;
+	d.renderer->render(d.scene, views, tiles, true);
+
+	Frame f;
+	f.index = static_cast<std::size_t>(k);
+	f.t = t;
+	f.rig = rig;
+	Rng imageNoise = Rng::stream(d.cfg.seed, "image noise", static_cast<uint64_t>(k));
+	f.image = d.camera->image(tiles[0], d.cfg.image_noise, imageNoise);
+	f.has_image = true;
+	Rng lidarNoise = Rng::stream(d.cfg.seed, "lidar noise", static_cast<uint64_t>(k));
+	const std::vector<RenderedView> lt(std::make_move_iterator(tiles.begin() + 1), std::make_move_iterator(tiles.end()));
+	const std::vector<View> lv(views.begin() + 1, views.end());
+	f.scan = d.lidar->sample(lt, lv, lidarAt, {d.cfg.range_noise, d.cfg.dropout}, lidarNoise);
+	f.has_scan = true;
+	if (camera_depth) *camera_depth = std::move(tiles[0]);
+	return f;
+}
+
+std::string Simulator::summary() const
+{
+	const auto& d = *impl_;
+	std::ostringstream s;
+	s.precision(1);
+	s << std::fixed << scenarioName(d.cfg.scenario) << " world: " << d.world.triangleCount() << " triangles along "
+	  << d.drive.road.length() << " m of road; drive " << pathLength(groundTruth()) << " m in " << frameCount() << " frames";
+	if (d.drive.corridor_to > d.drive.corridor_from) s << "; corridor " << d.drive.corridor_to - d.drive.corridor_from << " m";
+	return s.str();
+}
+}  // namespace vlo::sim

@@ -25,8 +25,10 @@ mkdir -p "$OUT"
 INI="$ROOT/ini/sim-hdl64.ini"
 if [ -x "$BIN/vlo-run" ] && [ -f "$INI" ]; then
 	"$BIN/vlo-run" --rawlog "$SAMPLE" --ini "$INI" --out "$OUT" --gt "$GT"
-	if [ -x "$BIN/vlo-eval" ] && [ -f "$OUT/trajectory_vlo.tum" ]; then
-		"$BIN/vlo-eval" --gt "$GT" --est "$OUT/trajectory_vlo.tum" --metric ate --json "$OUT/eval.json"
+	# The final trajectory of the configured mode, as summary.json names it.
+	TRAJ=$(grep -o '"trajectory": "[^"]*"' "$OUT/summary.json" | cut -d'"' -f4)
+	if [ -x "$BIN/vlo-eval" ] && [ -f "$OUT/$TRAJ" ]; then
+		"$BIN/vlo-eval" --gt "$GT" --est "$OUT/$TRAJ" --metric all --kitti-lengths 20,40,60,80 --json "$OUT/eval.json"
 	fi
 elif [ -x "$BIN/vlo-snapshot" ]; then
 	echo "run-sample: vlo-run or $INI is missing; drawing the ground truth and two frames instead"

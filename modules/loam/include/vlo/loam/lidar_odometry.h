@@ -1,0 +1,99 @@
+#pragma once
+// The LiDAR odometry and mapping of one sensor: preprocessing, features, scan-to-scan odometry
+// and scan-to-map refinement every frame, with the initial guess from a MotionPrior.
+//
+//   LidarOdometry lo(options);
+//   for (each scan) { auto r = lo.process(t, scan, vo_motion_or_nullopt); use r.pose; }
+//   lo.mapPoints();  // for map.pcd
+#include <vlo/core/frame.h>
+#include <vlo/loam/features.h>
+#include <vlo/loam/mapping.h>
+#include <vlo/loam/motion_prior.h>
+#include <vlo/loam/odometry.h>
+#include <vlo/loam/options.h>
+#include <vlo/loam/rings.h>
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace vlo::loam
+{
+enum class FrameStatus
+{
+	Ok,  ///< the enabled registrations succeeded (scan-to-map, or scan-to-scan without mapping)
+	Initialized,  ///< first usable frame: the map starts here
+	Degraded,  ///< a registration failed (reason says why): pose from the other stage or the prior
+	Skipped,  ///< unusable input (reason says why): pose propagated by the prior
+};
+const char* toString(FrameStatus s);
+
+struct StageTimes
+{
+	double preprocess = 0, features = 0, deskew = 0, odometry = 0, mapping = 0, map_update = 0, total = 0;  ///< [ms]
+};
+
+struct LidarOdometryResult
+{
+	double t = 0;
+	FrameStatus status = FrameStatus::Skipped;
+	std::string reason;  ///< empty when Ok
+	Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< LiDAR in the first LiDAR frame
+	Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  ///< pose of this frame in the previous
+	Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();  ///< the prior's motion
+	std::string prior_source;  ///< constant_velocity | external | none
+
+	std::size_t n_input = 0, n_valid = 0;  ///< points given / kept after preprocessing
+	int n_rings = 0;  ///< populated rings
+	std::size_t n_sharp = 0, n_less_sharp = 0, n_flat = 0, n_less_flat = 0;
+	int passes = 0;  ///< registrations run (more than one only when deskewing)
+	ScanToScanOdometry::Result odometry;  ///< iterations, matches, residual, ok/reason (last pass)
+	ScanToMap::Result mapping;  ///< iterations, matches, residual, degeneracy, ok/reason
+	std::size_t map_edge_points = 0, map_plane_points = 0;
+	StageTimes ms;
+};
+
+class LidarOdometry
+{
+   public:
+	/// Validates the options (throws InputError naming the bad key).
+	explicit LidarOdometry(const LoamOptions& o = {});
+
+	/// Replaces the initial-guess provider (default: the one options.prior names).
+	void setMotionPrior(std::unique_ptr<MotionPrior> prior);
+
+	/// Processes the scan taken at time t (LiDAR frame). `prior_motion` is the caller's guess of
+	/// the motion since the previous frame (the pose of this LiDAR frame in the previous one);
+	/// the ConstantVelocity prior ignores it. Never throws on bad data: see status and reason.
+	LidarOdometryResult process(double t, const PointCloud& scan, const std::optional<Eigen::Isometry3d>& prior_motion);
+
+	void reset();
+	std::size_t frames() const { return frames_; }
+	const Eigen::Isometry3d& pose() const { return pose_; }
+	const LoamOptions& options() const { return opt_; }
+	const FeatureSet& lastFeatures() const { return features_; }
+	const ScanToMap& mapper() const { return mapper_; }
+	/// Every map point (edges, then planes) in the first LiDAR frame.
+	std::vector<Eigen::Vector3f> mapPoints() const;
+
+   private:
+	LidarOdometryResult skip(LidarOdometryResult r, const std::string& why);
+	void registerFrame(const FeatureSet& f, LidarOdometryResult& r, Eigen::Isometry3d& odom, Eigen::Isometry3d& pose);
+
+	LoamOptions opt_;
+	ScanPreprocessor pre_;
+	FeatureExtractor extractor_;
+	ScanToScanOdometry odometry_;
+	ScanToMap mapper_;
+	std::unique_ptr<MotionPrior> prior_;
+	FeatureSet features_;
+
+	std::size_t frames_ = 0;
+	Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();  ///< map frame, last frame
+	Eigen::Isometry3d odom_pose_ = Eigen::Isometry3d::Identity();  ///< odometry frame, last frame
+	Eigen::Isometry3d odom_ref_ = Eigen::Isometry3d::Identity();  ///< odometry frame, reference scan
+	Eigen::Isometry3d map_T_odom_ = Eigen::Isometry3d::Identity();  ///< A-LOAM's wmap_T_odom
+	std::optional<double> t_prev_;
+};
+}  // namespace vlo::loam

@@ -1,0 +1,60 @@
+#pragma once
+// Scan-to-map registration (A-LOAM laserMapping), run every frame: the scan's edge and plane
+// points, downsampled, are matched to lines and planes fitted to their nearest map points, the
+// pose is refined from the odometry's guess, and the scan is added to the bounded local map.
+#include <vlo/loam/degeneracy.h>
+#include <vlo/loam/options.h>
+#include <vlo/loam/pose_solver.h>
+#include <vlo/loam/types.h>
+#include <vlo/loam/voxel_map.h>
+
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+namespace vlo::loam
+{
+class ScanToMap
+{
+   public:
+	/// A scan's points used for matching, downsampled, in the LiDAR frame.
+	struct Input
+	{
+		std::vector<Eigen::Vector3f> edges, planes;
+	};
+	struct Result
+	{
+		Eigen::Isometry3d T_map_curr = Eigen::Isometry3d::Identity();
+		bool ok = false;  ///< false: T_map_curr is the guess
+		std::string reason;
+		int rounds = 0;  ///< correspondence + solve rounds run
+		int iterations = 0;
+		int n_edges = 0, n_planes = 0;  ///< matches of the last round
+		double rms = 0;  ///< distance RMS at the solution [m]
+		Degeneracy degeneracy;
+	};
+
+	explicit ScanToMap(const MappingOptions& o);
+
+	Input prepare(const FeatureSet& f) const;
+	/// Refines the pose of the scan in the map from `guess`; does not change the map.
+	Result align(const Input& in, const Eigen::Isometry3d& guess) const;
+	/// Adds the scan's less-sharp and less-flat points at pose T_map_curr and drops the far map.
+	void insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr);
+	void clear();
+
+	bool empty() const { return edge_map_.numPoints() == 0 && plane_map_.numPoints() == 0; }
+	const VoxelMap& edgeMap() const { return edge_map_; }
+	const VoxelMap& planeMap() const { return plane_map_; }
+
+	/// One round's matches for `in` at pose T.
+	void findMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
+
+   private:
+	bool fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMatch& out) const;
+
+	MappingOptions opt_;
+	VoxelMap edge_map_, plane_map_;
+	std::uint32_t scans_inserted_ = 0;  ///< scan-line tags: (scan << 8) | ring
+};
+}  // namespace vlo::loam

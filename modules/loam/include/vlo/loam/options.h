@@ -1,0 +1,139 @@
+#pragma once
+// Options of the LiDAR odometry and mapping, one CLoadableOptions struct per stage.
+// INI sections: [loam.scan], [loam.features], [loam.odometry], [loam.mapping], [loam.prior].
+// Every default below is the value used when the key is absent; saveToConfigFile() writes them all
+// with a comment, so a saved file lists every known key.
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <string>
+#include <vector>
+
+namespace vlo::loam
+{
+/// Scan preprocessing: ring assignment, timing within the sweep, range gating, deskew.
+struct ScanOptions : public mrpt::config::CLoadableOptions
+{
+	std::string ring_model = "uniform";  ///< uniform | hdl64 | table
+	int n_rings = 16;  ///< beams of the uniform model
+	double vfov_min_deg = -15.0, vfov_max_deg = 15.0;  ///< lowest/highest beam (uniform)
+	std::vector<double> elevation_table_deg;  ///< beam elevations (table model), any order
+	double fov_margin_deg = 0.5;  ///< accepted beyond the lowest/highest beam
+	double min_range = 3.0;  ///< closer returns (vehicle body, noise) are dropped [m]
+	double max_range = 150.0;  ///< farther returns are dropped [m]
+	double scan_period = 0.1;  ///< seconds per sweep
+	bool clockwise = true;  ///< rotation seen from above (Velodyne: clockwise)
+	bool time_from_first_point = true;  ///< sweep starts at the first point's azimuth
+	double sweep_start_azimuth_deg = 180.0;  ///< used when time_from_first_point is false
+	bool deskew = false;  ///< undistort features with the initial-guess motion
+	double deskew_reference = 1.0;  ///< fraction of the sweep the scan's pose refers to
+	int max_deskew_passes = 3;  ///< deskew + register again while the motion found still changes
+	double deskew_tolerance = 0.01;  ///< ... by more than this [m]
+	double deskew_tolerance_deg = 0.1;  ///< ... or this [deg]
+
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+	void validate() const;  ///< throws InputError naming the key
+};
+
+/// Curvature-based feature selection (LOAM section IV-A).
+struct FeatureOptions : public mrpt::config::CLoadableOptions
+{
+	int curvature_half_window = 5;  ///< neighbours on each side on the same ring
+	int n_sectors = 6;  ///< per ring, for an even spread of features
+	int max_sharp = 2, max_less_sharp = 20, max_flat = 4;  ///< per sector
+	double sharp_threshold = 0.1;  ///< curvature above: edge candidate [m^2]
+	double flat_threshold = 0.1;  ///< curvature below: plane candidate [m^2]
+	double suppress_gap_sq = 0.05;  ///< neighbour suppression stops at a gap this large [m^2]
+	bool sharp_local_max = true;  ///< edges only where the curvature peaks within the window
+	double less_flat_leaf = 0.2;  ///< voxel size of the less-flat downsampling [m]
+	double less_flat_threshold = 0.1;  ///< less-flat points: curvature below this [m^2]
+	bool reject_occluded = true;
+	double occlusion_gap_sq = 0.1;  ///< consecutive points this far apart may be an occlusion [m^2]
+	double occlusion_angle = 0.1;  ///< ... if their beams are closer than this [rad]
+	bool reject_parallel = true;
+	double parallel_ratio = 0.0002;  ///< gap^2 > ratio * range^2 on both sides: beam grazes a surface
+	int min_rings = 4;  ///< fewer populated rings: the frame is skipped
+	int min_sharp = 10, min_flat = 30;  ///< fewer features: the frame is skipped
+
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+	void validate() const;
+};
+
+/// Robust nonlinear least squares settings shared by both registrations.
+struct SolverOptions
+{
+	int outer_iterations = 2;  ///< correspondence search + solve rounds
+	int max_solver_iterations = 4;  ///< Ceres iterations per round
+	std::string loss = "huber";  ///< huber | cauchy | none
+	double loss_scale = 0.05;  ///< residual scale where the robust loss bends [m]
+	int matches_per_block = 64;  ///< 1: one Ceres block per match (loss attached by Ceres)
+	double converged_translation = 0.005;  ///< a round moving less than this ends the rounds [m]
+	double converged_rotation_deg = 0.02;  ///< ... and turning less than this [deg]
+};
+
+/// Scan-to-scan registration against the previous scan's features.
+struct OdometryOptions : public mrpt::config::CLoadableOptions
+{
+	bool enabled = true;
+	SolverOptions solver;
+	double max_match_distance = 5.0;  ///< nearest-neighbour gate [m]
+	int nearby_rings = 2;  ///< rings searched on each side for the second/third point
+	bool use_kdtree = false;  ///< first neighbour from a kd-tree (A-LOAM) instead of the ring index
+	int min_correspondences = 20;  ///< fewer: keep the initial guess
+
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+	void validate() const;
+};
+
+/// Scan-to-map registration and the bounded local map.
+struct MappingOptions : public mrpt::config::CLoadableOptions
+{
+	bool enabled = true;
+	SolverOptions solver;
+	double edge_leaf = 0.4, plane_leaf = 0.8;  ///< downsampling of the scan's features [m]
+	double map_edge_resolution = 0.2, map_plane_resolution = 0.4;  ///< one map point per cell [m]
+	double voxel_size = 2.0;  ///< hash voxel edge; >= 2 * max_nn_distance keeps the search exact [m]
+	int max_points_per_voxel = 80;
+	double map_radius = 150.0;  ///< voxels farther from the vehicle are dropped [m]
+	int knn = 5;
+	double max_nn_distance = 1.0;  ///< all knn neighbours must be this close [m]
+	double edge_eigen_ratio = 3.0;  ///< line if largest eigenvalue > ratio * middle one
+	double plane_max_distance = 0.05;  ///< plane if every neighbour is this close to it [m]
+	double plane_line_ratio = 10.0;  ///< not a plane if largest eigenvalue > ratio * middle (a line)
+	int min_edge_correspondences = 0, min_plane_correspondences = 50;  ///< fewer: keep the odometry pose (edges are optional: some scenes have none)
+	double degeneracy_threshold = 10.0;  ///< min eigenvalue of J^T J below: degenerate
+
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+	void validate() const;
+};
+
+/// Source of the initial guess of each frame's motion.
+struct PriorOptions : public mrpt::config::CLoadableOptions
+{
+	std::string source = "constant_velocity";  ///< constant_velocity | external
+	double max_translation = 5.0;  ///< an external motion longer than this is rejected [m]
+	double max_rotation_deg = 30.0;  ///< ... or turning more than this [deg]
+
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+	void validate() const;
+};
+
+/// All of the above, read from / written to their default sections.
+struct LoamOptions
+{
+	ScanOptions scan;
+	FeatureOptions features;
+	OdometryOptions odometry;
+	MappingOptions mapping;
+	PriorOptions prior;
+
+	void load(const mrpt::config::CConfigFileBase& c);
+	void save(mrpt::config::CConfigFileBase& c) const;
+	void validate() const;
+	static std::vector<std::string> sections();
+};
+}  // namespace vlo::loam

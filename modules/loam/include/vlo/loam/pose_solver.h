@@ -1,0 +1,27 @@
+#pragma once
+// Robust least-squares pose from line and plane matches (Ceres, quaternion on its manifold).
+#include <vlo/loam/correspondences.h>
+#include <vlo/loam/options.h>
+
+#include <Eigen/Geometry>
+
+namespace vlo::loam
+{
+struct SolveReport
+{
+	int iterations = 0;  ///< Ceres iterations
+	double initial_cost = 0, final_cost = 0;  ///< Ceres costs (robustified)
+	double rms = 0;  ///< RMS of the point-to-line/plane distances at the solution [m]
+	Eigen::Matrix<double, 6, 6> JtJ = Eigen::Matrix<double, 6, 6>::Zero();  ///< robust-weighted, see Degeneracy
+};
+
+/// Refines T (source -> target) so that T * p lies on the matched lines and planes.
+SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3d& T);
+
+/// Whether a round moved the pose by less than the convergence thresholds.
+bool roundConverged(const Eigen::Isometry3d& before, const Eigen::Isometry3d& after, const SolverOptions& o);
+
+/// The robust-weighted J^T J and RMS distance of the matches at T (what solvePose reports).
+void evaluateMatches(const Matches& m, const SolverOptions& o, const Eigen::Isometry3d& T,
+	Eigen::Matrix<double, 6, 6>& JtJ, double& rms);
+}  // namespace vlo::loam

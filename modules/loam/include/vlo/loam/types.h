@@ -1,0 +1,46 @@
+#pragma once
+// Data passed between the LOAM stages.
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace vlo::loam
+{
+/// A preprocessed LiDAR return: position in the LiDAR frame, beam (ring) index counted from the
+/// lowest beam, and time within the sweep as a fraction in [0, 1).
+struct ScanPoint
+{
+	Eigen::Vector3f p = Eigen::Vector3f::Zero();
+	float time = 0;
+	int ring = 0;
+};
+using ScanPoints = std::vector<ScanPoint>;
+
+/// A scan split into rings, each ring ordered by time (azimuth).
+struct RingScan
+{
+	ScanPoints points;  ///< ring 0, then ring 1, ...
+	std::vector<std::size_t> ring_begin;  ///< n_rings + 1 offsets into points
+	std::size_t n_input = 0;  ///< points given
+	std::size_t n_invalid = 0;  ///< NaN / infinite
+	std::size_t n_out_of_range = 0;  ///< closer than min_range or farther than max_range
+	std::size_t n_out_of_fov = 0;  ///< elevation outside every beam
+
+	int numRings() const { return ring_begin.empty() ? 0 : static_cast<int>(ring_begin.size()) - 1; }
+	std::size_t ringSize(int r) const { return ring_begin[r + 1] - ring_begin[r]; }
+	int populatedRings(std::size_t min_points) const;
+};
+
+/// LOAM features of one scan, in the LiDAR frame. Every set is ordered by ring, then time.
+struct FeatureSet
+{
+	ScanPoints sharp;  ///< strongest edge points: matched against the reference
+	ScanPoints less_sharp;  ///< edge points the next scan matches against (sharp included)
+	ScanPoints flat;  ///< flattest points: matched against the reference
+	ScanPoints less_flat;  ///< plane points the next scan matches against (downsampled)
+
+	bool empty() const { return less_sharp.empty() && less_flat.empty(); }
+};
+}  // namespace vlo::loam

@@ -1,0 +1,56 @@
+#pragma once
+// The local map: points in a hash of cubic voxels around the vehicle.
+// - Downsampled: each voxel is split into cells of `resolution` and keeps at most one point per
+//   cell (the first seen), so revisiting a place adds nothing.
+// - Bounded: voxels farther than a radius from the vehicle are dropped (removeFar), so the map
+//   holds at most the volume of that ball, however long the drive.
+// - Fast neighbour search without rebuilding a kd-tree each frame: the k nearest points within r
+//   of q all lie in the 2x2x2 voxels nearest to q whenever r <= voxel_size / 2.
+#include <vlo/loam/voxel_hash.h>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace vlo::loam
+{
+class VoxelMap
+{
+   public:
+	VoxelMap(double voxel_size, double resolution, int max_points_per_voxel);
+
+	/// Adds points (map frame) with an optional tag each (the scan line they come from); returns
+	/// how many were kept.
+	std::size_t insert(const std::vector<Eigen::Vector3f>& points, const std::vector<std::uint32_t>* tags = nullptr);
+	/// Up to k (<= 32) nearest map points within max_dist of q, nearest first, and their tags;
+	/// returns how many.
+	int knn(const Eigen::Vector3f& q, int k, float max_dist, Eigen::Vector3f* out, std::uint32_t* out_tags = nullptr) const;
+	/// Drops voxels whose centre is farther than radius from c; returns how many points went.
+	std::size_t removeFar(const Eigen::Vector3f& c, float radius);
+	void clear();
+
+	std::size_t numPoints() const { return n_points_; }
+	std::size_t numVoxels() const { return index_.size(); }
+	double voxelSize() const { return size_; }
+	void appendPoints(std::vector<Eigen::Vector3f>& out) const;
+
+   private:
+	struct Voxel
+	{
+		std::vector<Eigen::Vector3f> points;
+		std::vector<std::uint32_t> cells;  ///< occupied cell of each point
+		std::vector<std::uint32_t> tags;
+		Eigen::Vector3i key = Eigen::Vector3i::Zero();
+	};
+	Eigen::Vector3i voxelOf(const Eigen::Vector3f& p) const;
+
+	double size_, resolution_;
+	float inv_size_;
+	int cells_per_axis_, max_points_;
+	VoxelHash index_;  ///< voxel key -> slot in voxels_
+	std::vector<Voxel> voxels_;
+	std::vector<std::uint32_t> free_;  ///< recycled slots
+	std::size_t n_points_ = 0;
+};
+}  // namespace vlo::loam

@@ -1,0 +1,195 @@
+#include "vlo/loam/lidar_odometry.h"
+
+#include <vlo/core/se3.h>
+#include <vlo/loam/deskew.h>
+
+#include <chrono>
+
+namespace vlo::loam
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point& t0)
+{
+	const auto t1 = Clock::now();
+	const double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+	t0 = t1;
+	return ms;
+}
+}  // namespace
+
+const char* toString(FrameStatus s)
+{
+	switch (s)
+	{
+		case FrameStatus::Ok: return "ok";
+		case FrameStatus::Initialized: return "initialized";
+		case FrameStatus::Degraded: return "degraded";
+		case FrameStatus::Skipped: return "skipped";
+	}
+	return "?";
+}
+
+LidarOdometry::LidarOdometry(const LoamOptions& o)
+	: opt_((o.validate(), o)),
+	  pre_(o.scan),
+	  extractor_(o.features),
+	  odometry_(o.odometry, pre_.model()),
+	  mapper_(o.mapping),
+	  prior_(makeMotionPrior(o.prior))
+{
+}
+
+void LidarOdometry::setMotionPrior(std::unique_ptr<MotionPrior> prior)
+{
+	if (prior) prior_ = std::move(prior);
+}
+
+void LidarOdometry::reset()
+{
+	odometry_.clearReference();
+	mapper_.clear();
+	prior_->reset();
+	features_ = {};
+	frames_ = 0;
+	pose_ = odom_pose_ = odom_ref_ = map_T_odom_ = Eigen::Isometry3d::Identity();
+	t_prev_.reset();
+}
+
+std::vector<Eigen::Vector3f> LidarOdometry::mapPoints() const
+{
+	std::vector<Eigen::Vector3f> pts;
+	mapper_.edgeMap().appendPoints(pts);
+	mapper_.planeMap().appendPoints(pts);
+	return pts;
+}
+
+// Unusable input: the pose follows the prior and the reference scan and map stay as they were.
+LidarOdometryResult LidarOdometry::skip(LidarOdometryResult r, const std::string& why)
+{
+	r.status = FrameStatus::Skipped;
+	r.reason = why;
+	r.motion = frames_ ? r.guess : Eigen::Isometry3d::Identity();
+	r.pose = pose_ * r.motion;
+	odom_pose_ = odom_pose_ * r.motion;
+	map_T_odom_ = r.pose * odom_pose_.inverse();
+	prior_->update(r.t, r.motion);
+	pose_ = r.pose;
+	t_prev_ = r.t;
+	++frames_;
+	return r;
+}
+
+// Scan-to-scan then scan-to-map for features f; sets the status and the odometry/map poses.
+void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, Eigen::Isometry3d& odom, Eigen::Isometry3d& pose)
+{
+	auto t0 = Clock::now();
+	// Scan-to-scan, against the last usable scan (frames in between were skipped).
+	odom = odom_pose_ * r.guess;
+	if (opt_.odometry.enabled && odometry_.hasReference())
+	{
+		r.odometry = odometry_.match(f, odom_ref_.inverse() * odom);
+		odom = odom_ref_ * r.odometry.T_prev_curr;
+	}
+	r.ms.odometry += msSince(t0);
+
+	// Scan-to-map from the odometry pose carried into the map frame.
+	pose = map_T_odom_ * odom;
+	const bool first = (!opt_.mapping.enabled || mapper_.empty()) && (!opt_.odometry.enabled || !odometry_.hasReference());
+	r.status = first ? FrameStatus::Initialized : FrameStatus::Ok;
+	r.reason.clear();
+	if (!first && opt_.mapping.enabled)
+	{
+		r.mapping = mapper_.align(mapper_.prepare(f), pose);
+		if (r.mapping.ok) pose = r.mapping.T_map_curr;
+		else r.status = FrameStatus::Degraded, r.reason = r.mapping.reason;
+	}
+	else if (!first && opt_.odometry.enabled && !r.odometry.ok)
+		r.status = FrameStatus::Degraded, r.reason = r.odometry.reason;
+	r.ms.mapping += msSince(t0);
+}
+
+LidarOdometryResult LidarOdometry::process(
+	double t, const PointCloud& scan, const std::optional<Eigen::Isometry3d>& prior_motion)
+{
+	LidarOdometryResult r;
+	r.t = t;
+	const auto start = Clock::now();
+	auto t0 = start;
+	r.guess = frames_ ? prior_->predict(t, prior_motion) : Eigen::Isometry3d::Identity();
+	r.prior_source = frames_ ? prior_->lastSource() : "none";
+
+	const RingScan rs = pre_.process(scan);
+	r.n_input = scan.size();
+	r.n_valid = rs.points.size();
+	r.n_rings = rs.populatedRings(1);
+	r.ms.preprocess = msSince(t0);
+	if (rs.points.empty())
+		return skip(r, "no usable points (" + std::to_string(scan.size()) + " given: " + std::to_string(rs.n_invalid) +
+				" invalid, " + std::to_string(rs.n_out_of_range) + " out of range, " + std::to_string(rs.n_out_of_fov) +
+				" out of the vertical field of view)");
+	if (r.n_rings < opt_.features.min_rings)
+		return skip(r, "only " + std::to_string(r.n_rings) + " populated rings (min_rings " +
+				std::to_string(opt_.features.min_rings) + ")");
+
+	FeatureSet raw = extractor_.extract(rs);
+	r.n_sharp = raw.sharp.size();
+	r.n_less_sharp = raw.less_sharp.size();
+	r.n_flat = raw.flat.size();
+	r.n_less_flat = raw.less_flat.size();
+	r.ms.features = msSince(t0);
+	if (static_cast<int>(raw.sharp.size()) < opt_.features.min_sharp || static_cast<int>(raw.flat.size()) < opt_.features.min_flat)
+		return skip(r, "too few features (" + std::to_string(raw.sharp.size()) + " sharp, " + std::to_string(raw.flat.size()) + " flat)");
+
+	// Without deskewing, one registration. With it, the sweep is undistorted by the guessed motion,
+	// registered, and undistorted again by the motion found while that changes it noticeably (at
+	// the start, when the guess knows nothing, and when the motion changes). The map and the next
+	// scan get the features undistorted by the final motion.
+	const bool undistort = opt_.scan.deskew && frames_ && t_prev_ && t > *t_prev_;
+	const auto deskewed = [&](const Eigen::Isometry3d& motion) {
+		// The motion spans the time since the previous frame; deskewing needs one sweep's.
+		const Eigen::Isometry3d sweep = scaleMotion(motion, opt_.scan.scan_period / (t - *t_prev_));
+		FeatureSet d = raw;
+		for (ScanPoints* s : {&d.sharp, &d.less_sharp, &d.flat, &d.less_flat}) deskew(*s, sweep, opt_.scan.deskew_reference);
+		r.ms.deskew += msSince(t0);
+		return d;
+	};
+	Eigen::Isometry3d motion = r.guess, pose, odom;
+	FeatureSet f = undistort ? deskewed(motion) : std::move(raw);
+	for (r.passes = 1;; ++r.passes)
+	{
+		registerFrame(f, r, odom, pose);
+		if (!undistort) break;
+		const Eigen::Isometry3d found = pose_.inverse() * pose;
+		const Eigen::Isometry3d change = motion.inverse() * found;
+		motion = found;
+		t0 = Clock::now();
+		f = deskewed(motion);
+		if (r.passes >= opt_.scan.max_deskew_passes ||
+			(change.translation().norm() < opt_.scan.deskew_tolerance &&
+				rotationAngle(change.linear()) * 180.0 / M_PI < opt_.scan.deskew_tolerance_deg))
+			break;
+	}
+	t0 = Clock::now();
+	if (opt_.mapping.enabled) mapper_.insert(f, pose);
+	r.map_edge_points = mapper_.edgeMap().numPoints();
+	r.map_plane_points = mapper_.planeMap().numPoints();
+	r.ms.map_update = msSince(t0);
+
+	map_T_odom_ = pose * odom.inverse();
+	odom_pose_ = odom_ref_ = odom;
+	t0 = Clock::now();
+	if (opt_.odometry.enabled) odometry_.setReference(f);  // builds the search index: odometry time
+	r.ms.odometry += msSince(t0);
+	r.motion = frames_ ? pose_.inverse() * pose : Eigen::Isometry3d::Identity();
+	r.pose = pose;
+	prior_->update(t, r.motion);
+	pose_ = pose;
+	t_prev_ = t;
+	++frames_;
+	features_ = std::move(f);
+	r.ms.total = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+	return r;
+}
+}  // namespace vlo::loam

@@ -1,0 +1,189 @@
+#include "vlo/loam/mapping.h"
+
+#include <vlo/loam/features.h>
+#include <vlo/loam/voxel_filter.h>
+
+#include <algorithm>
+
+#include <Eigen/Eigenvalues>
+
+namespace vlo::loam
+{
+ScanToMap::ScanToMap(const MappingOptions& o)
+	: opt_(o),
+	  edge_map_(o.voxel_size, o.map_edge_resolution, o.max_points_per_voxel),
+	  plane_map_(o.voxel_size, o.map_plane_resolution, o.max_points_per_voxel)
+{
+	opt_.validate();
+}
+
+ScanToMap::Input ScanToMap::prepare(const FeatureSet& f) const
+{
+	Input in;
+	in.edges = voxelDownsample(f.less_sharp, static_cast<float>(opt_.edge_leaf));
+	in.planes = voxelDownsample(f.less_flat, static_cast<float>(opt_.plane_leaf));
+	return in;
+}
+
+namespace
+{
+// Centroid and scatter of pts[0..n); the eigen-decomposition tells lines from planes.
+void fit(const Eigen::Vector3f* pts, int n, Eigen::Vector3d& c, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& es)
+{
+	c.setZero();
+	for (int i = 0; i < n; ++i) c += pts[i].cast<double>();
+	c /= n;
+	Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+	for (int i = 0; i < n; ++i)
+	{
+		const Eigen::Vector3d d = pts[i].cast<double>() - c;
+		C += d * d.transpose();
+	}
+	es.computeDirect(C / n);
+}
+
+bool lineLike(const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& es, double ratio)
+{
+	return es.eigenvalues()(2) > ratio * es.eigenvalues()(1);
+}
+}  // namespace
+
+// A plane through the k nearest map points, if they spread in two dimensions and all lie close
+// to it. Points of one scan line (one ring of one scan) cannot tell a plane: along a ring they are
+// collinear, and around a corner they fit a level plane that is not there. So at least two
+// neighbours must come from other scan lines (A-LOAM's scan-to-scan planes likewise take a point
+// from another ring); on dense sensors they nearly always do.
+bool ScanToMap::fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMatch& out) const
+{
+	constexpr int kWide = 16;
+	const int k = opt_.knn;
+	const float max_d = static_cast<float>(opt_.max_nn_distance);
+	std::uint32_t tag[32];
+	if (plane_map_.knn(q, k, max_d, nn, tag) < k) return false;
+	const auto others = [&](int n) {
+		int c = 0;
+		for (int i = 1; i < n; ++i) c += tag[i] != tag[0] ? 1 : 0;
+		return c;
+	};
+	if (others(k) < 2)
+	{
+		// Keep the nearest points of other lines and fill up with the nearest of the first line.
+		const int m = plane_map_.knn(q, kWide, max_d, nn, tag);
+		if (others(m) < 2) return false;
+		Eigen::Vector3f sel[32];
+		
+		int n = 0, n_other = 0;
+		for (int i = 0; i < m && n_other < k / 2; ++i)
+			if (tag[i] != tag[0]) sel[n++] = nn[i], ++n_other;
+		for (int i = 0; i < m && n < k; ++i)
+			if (tag[i] == tag[0]) sel[n++] = nn[i];
+		std::copy(sel, sel + k, nn);
+	}
+	Eigen::Vector3d c;
+	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+	fit(nn, k, c, es);
+	if (lineLike(es, opt_.plane_line_ratio)) return false;
+	const Eigen::Vector3d normal = es.eigenvectors().col(0);
+	const double d = -normal.dot(c);
+	for (int i = 0; i < k; ++i)
+		if (std::abs(normal.dot(nn[i].cast<double>()) + d) > opt_.plane_max_distance) return false;
+	out.n = normal;
+	out.d = d;
+	return true;
+}
+
+void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const
+{
+	out.clear();
+	const Eigen::Matrix3f R = T.linear().cast<float>();
+	const Eigen::Vector3f t = T.translation().cast<float>();
+	const int k = opt_.knn;
+	Eigen::Vector3f nn[32];
+	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+	Eigen::Vector3d c;
+	for (const Eigen::Vector3f& p : in.edges)
+	{
+		if (edge_map_.knn(R * p + t, k, static_cast<float>(opt_.max_nn_distance), nn) < k) continue;
+		fit(nn, k, c, es);
+		if (!lineLike(es, opt_.edge_eigen_ratio)) continue;
+		out.edges.push_back(EdgeMatch{p.cast<double>(), c, es.eigenvectors().col(2)});
+	}
+	PlaneMatch pm;
+	for (const Eigen::Vector3f& p : in.planes)
+		if (fitPlane(R * p + t, nn, pm))
+		{
+			pm.p = p.cast<double>();
+			out.planes.push_back(pm);
+		}
+}
+
+ScanToMap::Result ScanToMap::align(const Input& in, const Eigen::Isometry3d& guess) const
+{
+	Result res;
+	res.T_map_curr = guess;
+	Matches m;
+	Eigen::Isometry3d T = guess;
+	SolveReport rep;
+	for (int round = 0; round < opt_.solver.outer_iterations; ++round)
+	{
+		findMatches(in, T, m);
+		res.n_edges = static_cast<int>(m.edges.size());
+		res.n_planes = static_cast<int>(m.planes.size());
+		if (res.n_planes < opt_.min_plane_correspondences || res.n_edges < opt_.min_edge_correspondences)
+		{
+			res.reason = "too few scan-to-map matches (" + std::to_string(res.n_edges) + " edges, " +
+				std::to_string(res.n_planes) + " planes)";
+			return res;
+		}
+		const Eigen::Isometry3d before = T;
+		rep = solvePose(m, opt_.solver, T);
+		res.iterations += rep.iterations;
+		++res.rounds;
+		if (roundConverged(before, T, opt_.solver)) break;  // the matches would not change
+	}
+	res.rms = rep.rms;
+	res.degeneracy = analyseDegeneracy(rep.JtJ, opt_.degeneracy_threshold);
+	res.T_map_curr = T;
+	res.ok = true;
+	return res;
+}
+
+void ScanToMap::insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr)
+{
+	const Eigen::Matrix3f R = T_map_curr.linear().cast<float>();
+	const Eigen::Vector3f t = T_map_curr.translation().cast<float>();
+	const float radius = static_cast<float>(opt_.map_radius);
+	// Edges: centroids at the map's resolution (a third of the points, noise averaged).
+	std::vector<Eigen::Vector3f> w = voxelDownsample(f.less_sharp, static_cast<float>(opt_.map_edge_resolution));
+	for (Eigen::Vector3f& p : w) p = R * p + t;
+	edge_map_.insert(w);
+	edge_map_.removeFar(t, radius);
+	// Planes: merged along each ring, so every point keeps its scan line (frame, ring) as a tag.
+	ScanPoints merged;
+	{
+		RingVoxelMerger merger(static_cast<float>(opt_.map_plane_resolution), merged);
+		int ring = -1;
+		for (const ScanPoint& p : f.less_flat)
+		{
+			if (p.ring != ring) merger.flush(), ring = p.ring;
+			merger.add(p);
+		}
+	}
+	w.clear();
+	std::vector<std::uint32_t> tags;
+	for (const ScanPoint& p : merged)
+	{
+		w.push_back(R * p.p + t);
+		tags.push_back((scans_inserted_ << 8) | static_cast<std::uint32_t>(p.ring & 0xFF));
+	}
+	plane_map_.insert(w, &tags);
+	plane_map_.removeFar(t, radius);
+	++scans_inserted_;
+}
+
+void ScanToMap::clear()
+{
+	edge_map_.clear();
+	plane_map_.clear();
+}
+}  // namespace vlo::loam

@@ -1,0 +1,71 @@
+#include "vlo/loam/motion_prior.h"
+
+#include <vlo/core/se3.h>
+#include <vlo/loam/deskew.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vlo::loam
+{
+Eigen::Isometry3d ConstantVelocityPrior::predict(double t, const std::optional<Eigen::Isometry3d>&)
+{
+	if (!t_prev_ || last_dt_ <= 0)
+	{
+		source_ = t_prev_ ? "constant_velocity" : "none";
+		return last_;
+	}
+	source_ = "constant_velocity";
+	// A dropped frame doubles the interval: scale the motion (bounded, timestamps can be odd).
+	const double ratio = std::clamp((t - *t_prev_) / last_dt_, 0.0, 3.0);
+	if (std::abs(ratio - 1.0) < 0.05) return last_;
+	return scaleMotion(last_, ratio);
+}
+
+void ConstantVelocityPrior::update(double t, const Eigen::Isometry3d& T_prev_curr)
+{
+	if (t_prev_ && t > *t_prev_)
+	{
+		last_ = T_prev_curr;
+		last_dt_ = t - *t_prev_;
+	}
+	t_prev_ = t;
+}
+
+void ConstantVelocityPrior::reset()
+{
+	last_ = Eigen::Isometry3d::Identity();
+	last_dt_ = 0;
+	t_prev_.reset();
+	source_ = "none";
+}
+
+bool ExternalPrior::plausible(const Eigen::Isometry3d& T) const
+{
+	if (!T.matrix().allFinite()) return false;
+	const Eigen::Matrix3d R = T.linear();
+	if ((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-3 || R.determinant() < 0) return false;
+	return T.translation().norm() <= opt_.max_translation && rotationAngle(R) * 180.0 / M_PI <= opt_.max_rotation_deg;
+}
+
+Eigen::Isometry3d ExternalPrior::predict(double t, const std::optional<Eigen::Isometry3d>& external)
+{
+	const Eigen::Isometry3d cv = fallback_.predict(t, std::nullopt);
+	if (external && plausible(*external))
+	{
+		source_ = "external";
+		Eigen::Isometry3d T = *external;
+		T.linear() = orthonormalize(T.linear());  // visual odometry output may be slightly off SO(3)
+		return T;
+	}
+	source_ = fallback_.lastSource();
+	return cv;
+}
+
+std::unique_ptr<MotionPrior> makeMotionPrior(const PriorOptions& o)
+{
+	o.validate();
+	if (o.source == "external") return std::make_unique<ExternalPrior>(o);
+	return std::make_unique<ConstantVelocityPrior>();
+}
+}  // namespace vlo::loam

@@ -1,0 +1,131 @@
+#include "vlo/loam/odometry.h"
+
+#include <cmath>
+
+namespace vlo::loam
+{
+ScanToScanOdometry::ScanToScanOdometry(const OdometryOptions& o, const RingModel& rings)
+	: opt_(o), model_(rings), max2_(static_cast<float>(o.max_match_distance * o.max_match_distance))
+{
+	opt_.validate();
+}
+
+void ScanToScanOdometry::setReference(const FeatureSet& f)
+{
+	for (auto [set, pts] : {std::pair{&edges_, &f.less_sharp}, std::pair{&planes_, &f.less_flat}})
+	{
+		set->points = *pts;
+		set->rings.build(set->points, model_.numRings());
+		if (opt_.use_kdtree) set->tree.build(set->points);
+	}
+	has_ref_ = true;
+}
+
+// The closest reference point within max_match_distance, or -1.
+int ScanToScanOdometry::firstNeighbour(const Set& s, const RingSearch::Query& q) const
+{
+	float best = max2_;
+	if (opt_.use_kdtree)
+	{
+		const int j = s.tree.nearest(q.p, &best);
+		return (j >= 0 && best < max2_) ? j : -1;
+	}
+	const int r = model_.nearestRing(q.p.z(), std::hypot(q.p.x(), q.p.y()));
+	if (r < 0) return -1;
+	int j = s.rings.nearest(r, q, best);
+	for (int dr = 1; dr <= opt_.nearby_rings; ++dr)
+		for (int rr : {r - dr, r + dr})
+		{
+			const int k = s.rings.nearest(rr, q, best);
+			if (k >= 0) j = k;
+		}
+	return j;
+}
+
+// Closest point to q on the rings within nearby_rings of `ring`, `ring` itself excluded.
+int ScanToScanOdometry::closestOnNearbyRings(const Set& s, int ring, const RingSearch::Query& q) const
+{
+	float best = max2_;
+	int j = -1;
+	for (int dr = 1; dr <= opt_.nearby_rings; ++dr)
+		for (int rr : {ring - dr, ring + dr})
+		{
+			const int k = s.rings.nearest(rr, q, best);
+			if (k >= 0) j = k;
+		}
+	return j;
+}
+
+void ScanToScanOdometry::findMatches(const FeatureSet& curr, const Eigen::Isometry3d& T, Matches& out) const
+{
+	out.clear();
+	const Eigen::Matrix3f R = T.linear().cast<float>();
+	const Eigen::Vector3f t = T.translation().cast<float>();
+
+	// Edge: the closest reference edge point and the closest one on a nearby ring span a line.
+	for (const ScanPoint& sp : curr.sharp)
+	{
+		const RingSearch::Query q(R * sp.p + t);
+		const int j = firstNeighbour(edges_, q);
+		if (j < 0) continue;
+		const int l = closestOnNearbyRings(edges_, edges_.points[j].ring, q);
+		if (l < 0) continue;
+		const Eigen::Vector3d a = edges_.points[j].p.cast<double>(), b = edges_.points[l].p.cast<double>();
+		const double len = (b - a).norm();
+		if (len < 1e-3) continue;
+		out.edges.push_back(EdgeMatch{sp.p.cast<double>(), a, (b - a) / len});
+	}
+	// Plane: the closest reference plane point, the closest on its ring and the closest on a nearby
+	// ring span a plane (two rings keep the three points from being collinear).
+	for (const ScanPoint& sp : curr.flat)
+	{
+		const RingSearch::Query q(R * sp.p + t);
+		const int j = firstNeighbour(planes_, q);
+		if (j < 0) continue;
+		float best = max2_;
+		const int l = planes_.rings.nearest(planes_.points[j].ring, q, best, j);
+		if (l < 0) continue;
+		const int m = closestOnNearbyRings(planes_, planes_.points[j].ring, q);
+		if (m < 0) continue;
+		const Eigen::Vector3d pj = planes_.points[j].p.cast<double>();
+		Eigen::Vector3d n = (planes_.points[l].p.cast<double>() - pj).cross(planes_.points[m].p.cast<double>() - pj);
+		const double nn = n.norm();
+		if (nn < 1e-6) continue;
+		n /= nn;
+		out.planes.push_back(PlaneMatch{sp.p.cast<double>(), n, -n.dot(pj)});
+	}
+}
+
+ScanToScanOdometry::Result ScanToScanOdometry::match(const FeatureSet& curr, const Eigen::Isometry3d& guess) const
+{
+	Result res;
+	res.T_prev_curr = guess;
+	if (!has_ref_)
+	{
+		res.reason = "no reference scan";
+		return res;
+	}
+	Matches m;
+	Eigen::Isometry3d T = guess;
+	for (int round = 0; round < opt_.solver.outer_iterations; ++round)
+	{
+		findMatches(curr, T, m);
+		res.n_edges = static_cast<int>(m.edges.size());
+		res.n_planes = static_cast<int>(m.planes.size());
+		if (static_cast<int>(m.size()) < opt_.min_correspondences)
+		{
+			res.reason = "too few scan-to-scan matches (" + std::to_string(m.size()) + ")";
+			return res;
+		}
+		const Eigen::Isometry3d before = T;
+		const SolveReport rep = solvePose(m, opt_.solver, T);
+		res.iterations += rep.iterations;
+		res.rms = rep.rms;
+		++res.rounds;
+		if (roundConverged(before, T, opt_.solver)) break;  // the matches would not change
+	}
+	res.T_prev_curr = T;
+	res.ok = true;
+	return res;
+}
+}  // namespace vlo::loam

@@ -1,0 +1,134 @@
+#include "vlo/loam/pose_solver.h"
+
+#include <ceres/ceres.h>
+#include <vlo/loam/factors.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <memory>
+
+namespace vlo::loam
+{
+namespace
+{
+std::unique_ptr<ceres::LossFunction> makeLoss(const SolverOptions& o)
+{
+	if (o.loss == "huber") return std::make_unique<ceres::HuberLoss>(o.loss_scale);
+	if (o.loss == "cauchy") return std::make_unique<ceres::CauchyLoss>(o.loss_scale);
+	return nullptr;
+}
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v)
+{
+	Eigen::Matrix3d m;
+	m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+	return m;
+}
+}  // namespace
+
+bool roundConverged(const Eigen::Isometry3d& before, const Eigen::Isometry3d& after, const SolverOptions& o)
+{
+	const Eigen::Isometry3d d = before.inverse() * after;
+	return d.translation().norm() < o.converged_translation &&
+		Eigen::AngleAxisd(d.rotation()).angle() * 180.0 / M_PI < o.converged_rotation_deg;
+}
+
+void evaluateMatches(const Matches& m, const SolverOptions& o, const Eigen::Isometry3d& T,
+	Eigen::Matrix<double, 6, 6>& JtJ, double& rms)
+{
+	const auto loss = makeLoss(o);
+	const Eigen::Matrix3d R = T.rotation();
+	JtJ.setZero();
+	double sum2 = 0;
+	// IRLS weight rho'(s) of the robust loss, so outliers count as little as in the solve.
+	const auto weight = [&](double s) {
+		if (!loss) return 1.0;
+		double rho[3];
+		loss->Evaluate(s, rho);
+		return rho[1];
+	};
+	Eigen::Matrix<double, 3, 6> J;
+	for (const EdgeMatch& e : m.edges)
+	{
+		const Eigen::Vector3d Rp = R * e.p;
+		const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - e.u * e.u.transpose();
+		const Eigen::Vector3d r = P * (Rp + T.translation() - e.a);
+		J.leftCols<3>() = -P * skew(Rp);
+		J.rightCols<3>() = P;
+		JtJ += weight(r.squaredNorm()) * J.transpose() * J;
+		sum2 += r.squaredNorm();
+	}
+	for (const PlaneMatch& p : m.planes)
+	{
+		const Eigen::Vector3d Rp = R * p.p;
+		const double r = p.n.dot(Rp + T.translation()) + p.d;
+		Eigen::Matrix<double, 1, 6> j;
+		j.leftCols<3>() = -p.n.transpose() * skew(Rp);
+		j.rightCols<3>() = p.n.transpose();
+		JtJ += weight(r * r) * j.transpose() * j;
+		sum2 += r * r;
+	}
+	rms = m.size() ? std::sqrt(sum2 / static_cast<double>(m.size())) : 0.0;
+}
+
+SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3d& T)
+{
+	SolveReport rep;
+	if (m.size() == 0) return rep;
+	Eigen::Quaterniond q0(T.rotation());
+	double q[4] = {q0.x(), q0.y(), q0.z(), q0.w()};
+	double t[3] = {T.translation().x(), T.translation().y(), T.translation().z()};
+
+	// Factors live here, not in the problem: block allocations instead of one per residual
+	// (a deque, because cost functions cannot be moved).
+	std::deque<EdgeFactor> edges;
+	std::deque<PlaneFactor> planes;
+	std::deque<BatchFactor> batches;
+	const auto loss = makeLoss(o);
+	ceres::EigenQuaternionManifold manifold;
+
+	ceres::Problem::Options po;
+	po.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+	po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+	po.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+	po.enable_fast_removal = false;
+	po.disable_all_safety_checks = true;  // our blocks are well formed; saves a hash lookup each
+	ceres::Problem problem(po);
+	problem.AddParameterBlock(q, 4, &manifold);
+	problem.AddParameterBlock(t, 3);
+	const int B = o.matches_per_block;
+	if (B <= 1)
+	{
+		for (const EdgeMatch& e : m.edges) problem.AddResidualBlock(&edges.emplace_back(e), loss.get(), q, t);
+		for (const PlaneMatch& p : m.planes) problem.AddResidualBlock(&planes.emplace_back(p), loss.get(), q, t);
+	}
+	else
+	{
+		const int ne = static_cast<int>(m.edges.size()), np = static_cast<int>(m.planes.size());
+		for (int i = 0; i < ne; i += B)
+			problem.AddResidualBlock(&batches.emplace_back(&m.edges[i], std::min(B, ne - i), nullptr, 0, loss.get()), nullptr, q, t);
+		for (int i = 0; i < np; i += B)
+			problem.AddResidualBlock(&batches.emplace_back(nullptr, 0, &m.planes[i], std::min(B, np - i), loss.get()), nullptr, q, t);
+	}
+
+	ceres::Solver::Options so;
+	so.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;  // 6 unknowns: normal equations are cheapest
+	so.max_num_iterations = o.max_solver_iterations;
+	so.num_threads = 1;
+	so.logging_type = ceres::SILENT;
+	so.minimizer_progress_to_stdout = false;
+	ceres::Solver::Summary summary;
+	ceres::Solve(so, &problem, &summary);
+
+	rep.iterations = static_cast<int>(summary.num_successful_steps + summary.num_unsuccessful_steps);
+	rep.initial_cost = summary.initial_cost;
+	rep.final_cost = summary.final_cost;
+	Eigen::Quaterniond qs(q[3], q[0], q[1], q[2]);
+	qs.normalize();
+	T.linear() = qs.toRotationMatrix();
+	T.translation() = Eigen::Vector3d(t[0], t[1], t[2]);
+	evaluateMatches(m, o, T, rep.JtJ, rep.rms);
+	return rep;
+}
+}  // namespace vlo::loam

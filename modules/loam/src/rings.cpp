@@ -1,0 +1,135 @@
+#include "vlo/loam/rings.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vlo::loam
+{
+namespace
+{
+constexpr double kDeg = M_PI / 180.0;
+constexpr float kTwoPi = 6.28318531f;
+}  // namespace
+
+std::vector<double> RingModel::hdl64Elevations()
+{
+	std::vector<double> e;
+	for (int k = 0; k < 32; ++k) e.push_back(2.0 - k / 3.0);
+	for (int k = 0; k < 32; ++k) e.push_back(-8.83 - 0.5 * k);
+	return e;
+}
+
+RingModel::RingModel(const ScanOptions& o)
+{
+	o.validate();
+	if (o.ring_model == "hdl64") elevations_deg_ = hdl64Elevations();
+	else if (o.ring_model == "table") elevations_deg_ = o.elevation_table_deg;
+	else
+		for (int k = 0; k < o.n_rings; ++k)
+			elevations_deg_.push_back(o.vfov_min_deg + (o.vfov_max_deg - o.vfov_min_deg) * k / (o.n_rings - 1));
+	std::sort(elevations_deg_.begin(), elevations_deg_.end());
+	elevations_deg_.erase(std::unique(elevations_deg_.begin(), elevations_deg_.end()), elevations_deg_.end());
+
+	for (std::size_t k = 0; k + 1 < elevations_deg_.size(); ++k)
+		tan_bounds_.push_back(static_cast<float>(std::tan(0.5 * (elevations_deg_[k] + elevations_deg_[k + 1]) * kDeg)));
+	const double lo = std::max(-89.9, elevations_deg_.front() - o.fov_margin_deg);
+	const double hi = std::min(89.9, elevations_deg_.back() + o.fov_margin_deg);
+	tan_lo_ = static_cast<float>(std::tan(lo * kDeg));
+	tan_hi_ = static_cast<float>(std::tan(hi * kDeg));
+}
+
+int RingModel::ringOf(float z, float rho) const
+{
+	const float t = z / rho;
+	if (!(t >= tan_lo_ && t <= tan_hi_)) return -1;  // also rejects NaN (rho = z = 0)
+	return static_cast<int>(std::upper_bound(tan_bounds_.begin(), tan_bounds_.end(), t) - tan_bounds_.begin());
+}
+
+int RingModel::nearestRing(float z, float rho) const
+{
+	const float t = z / rho;
+	if (std::isnan(t)) return -1;
+	return static_cast<int>(std::upper_bound(tan_bounds_.begin(), tan_bounds_.end(), t) - tan_bounds_.begin());
+}
+
+int RingScan::populatedRings(std::size_t min_points) const
+{
+	int n = 0;
+	for (int r = 0; r < numRings(); ++r) n += ringSize(r) >= min_points ? 1 : 0;
+	return n;
+}
+
+ScanPreprocessor::ScanPreprocessor(const ScanOptions& o) : opt_(o), model_(o) {}
+
+RingScan ScanPreprocessor::process(const PointCloud& scan)
+{
+	RingScan out;
+	const int n_rings = model_.numRings();
+	out.n_input = scan.size();
+	out.ring_begin.assign(n_rings + 1, 0);
+	count_.assign(n_rings, 0);
+	buf_.clear();
+	buf_.reserve(scan.size());
+
+	const float min2 = static_cast<float>(opt_.min_range * opt_.min_range);
+	const float max2 = static_cast<float>(opt_.max_range * opt_.max_range);
+	const float dir = opt_.clockwise ? -1.0f : 1.0f;  // clockwise: azimuth decreases with time
+	float az0 = static_cast<float>(opt_.sweep_start_azimuth_deg * kDeg);
+	bool have_start = !opt_.time_from_first_point;
+
+	for (const LidarPoint& lp : scan)
+	{
+		if (!std::isfinite(lp.x) || !std::isfinite(lp.y) || !std::isfinite(lp.z))
+		{
+			++out.n_invalid;
+			continue;
+		}
+		const float rho2 = lp.x * lp.x + lp.y * lp.y, r2 = rho2 + lp.z * lp.z;
+		if (r2 < min2 || r2 > max2)
+		{
+			++out.n_out_of_range;
+			continue;
+		}
+		const int ring = model_.ringOf(lp.z, std::sqrt(rho2));
+		if (ring < 0)
+		{
+			++out.n_out_of_fov;
+			continue;
+		}
+		const float az = fastAtan2(lp.y, lp.x);
+		if (!have_start)
+		{
+			az0 = az;
+			have_start = true;
+		}
+		float s = dir * (az - az0) * (1.0f / kTwoPi);  // in (-1, 1)
+		if (s < 0.0f) s += 1.0f;
+		if (s >= 1.0f) s = 0.0f;  // rounding of tiny negative values
+		ScanPoint p;
+		p.p = Eigen::Vector3f(lp.x, lp.y, lp.z);
+		p.time = s;
+		p.ring = ring;
+		buf_.push_back(p);
+		++count_[ring];
+	}
+
+	// Stable counting sort by ring keeps the sensor's order within a ring.
+	for (int r = 0; r < n_rings; ++r) out.ring_begin[r + 1] = out.ring_begin[r] + count_[r];
+	out.points.resize(buf_.size());
+	std::vector<std::size_t> next(out.ring_begin.begin(), out.ring_begin.end() - 1);
+	for (const ScanPoint& p : buf_) out.points[next[p.ring]++] = p;
+
+	// Most sensors deliver rings in time order, or rotated by the ring's start offset when the
+	// order is ring by ring (KITTI): rotate in that case and sort only otherwise.
+	const auto by_time = [](const ScanPoint& a, const ScanPoint& b) { return a.time < b.time; };
+	for (int r = 0; r < n_rings; ++r)
+	{
+		auto b = out.points.begin() + out.ring_begin[r], e = out.points.begin() + out.ring_begin[r + 1];
+		auto d = std::is_sorted_until(b, e, by_time);
+		if (d == e) continue;
+		if (std::is_sorted(d, e, by_time) && !by_time(*b, *(e - 1))) std::rotate(b, d, e);
+		else std::sort(b, e, by_time);
+	}
+	return out;
+}
+}  // namespace vlo::loam

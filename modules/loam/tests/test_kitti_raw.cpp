@@ -1,0 +1,70 @@
+// Real HDL-64E data: the KITTI raw sample (32 frames, slow traffic under a bridge, no ground truth)
+// runs to the end without failing or jumping. Skipped when the shared data is absent.
+#include <gtest/gtest.h>
+#include <vlo/loam/lidar_odometry.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "test_helpers.h"
+
+namespace vlo::loam::test
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+PointCloud readKittiBin(const fs::path& file)
+{
+	std::ifstream in(file, std::ios::binary);
+	PointCloud pc;
+	float v[4];
+	while (in.read(reinterpret_cast<char*>(v), sizeof v)) pc.push_back(LidarPoint{v[0], v[1], v[2], v[3]});
+	return pc;
+}
+
+// The scans, unpacked once into the build tree (xz takes a few seconds).
+fs::path kittiScans()
+{
+	const fs::path archive = fs::path(VLO_SHARED_DATA) / "kitti_raw_2011_09_26_sample.tar.xz";
+	const fs::path dir = fs::path(VLO_BIN_DIR) / ".." / "test_data" / "loam";
+	const fs::path scans = dir / "kitti_raw_2011_09_26_sample" / "velodyne_points" / "data";
+	if (fs::exists(scans / "0000000031.bin") || !fs::exists(archive)) return scans;
+	fs::create_directories(dir);
+	const std::string cmd = "tar -xJf '" + archive.string() + "' -C '" + dir.string() + "' --wildcards '*velodyne_points*'";
+	if (std::system(cmd.c_str()) != 0) ADD_FAILURE() << cmd;
+	return scans;
+}
+}  // namespace
+
+TEST(KittiRaw, RunsToTheEndWithoutJumps)
+{
+	const fs::path scans = kittiScans();
+	if (!fs::exists(scans / "0000000000.bin")) GTEST_SKIP() << "no KITTI raw sample in " VLO_SHARED_DATA;
+	LidarOdometry lo(hdl64Options());
+	Eigen::Isometry3d prev = Eigen::Isometry3d::Identity();
+	double length = 0, max_step = 0;
+	for (int i = 0; i < 32; ++i)
+	{
+		char name[32];
+		std::snprintf(name, sizeof name, "%010d.bin", i);
+		const PointCloud pc = readKittiBin(scans / name);
+		ASSERT_GT(pc.size(), 100000u);
+		const LidarOdometryResult r = lo.process(0.1 * i, pc, std::nullopt);
+		EXPECT_EQ(r.status, i == 0 ? FrameStatus::Initialized : FrameStatus::Ok) << i << ": " << r.reason;
+		EXPECT_FALSE(i > 0 && r.mapping.degeneracy.degenerate) << i;
+		const double step = (r.pose.translation() - prev.translation()).norm();
+		length += step;
+		max_step = std::max(max_step, step);
+		prev = r.pose;
+	}
+	std::printf("KITTI raw sample: %.2f m driven, largest step %.3f m, final yaw %.2f deg\n", length, max_step,
+		std::atan2(prev.linear()(1, 0), prev.linear()(0, 0)) * 180 / M_PI);
+	EXPECT_GT(length, 2.0);  // slow stop-and-go traffic, a few metres
+	EXPECT_LT(length, 8.0);
+	EXPECT_LT(max_step, 0.5);  // 5 m/s at most
+	EXPECT_LT(std::abs(prev.translation().z()), 0.3);
+}
+}  // namespace vlo::loam::test

@@ -1,0 +1,153 @@
+// The voxel hash, the voxel map (exact neighbours, downsampling, bounds) and a bounded map over a
+// long drive.
+#include <gtest/gtest.h>
+#include <vlo/loam/lidar_odometry.h>
+#include <vlo/loam/voxel_hash.h>
+#include <vlo/loam/voxel_map.h>
+
+#include <algorithm>
+#include <random>
+#include <unordered_map>
+
+#include "synthetic_world.h"
+#include "test_helpers.h"
+
+namespace vlo::loam::test
+{
+TEST(Map, VoxelHashMatchesUnorderedMap)
+{
+	std::mt19937 rng(1);
+	std::uniform_int_distribution<int> coord(-40, 40);
+	VoxelHash h;
+	std::unordered_map<std::uint64_t, std::uint32_t> ref;
+	for (int i = 0; i < 20000; ++i)
+	{
+		const std::uint64_t key = voxelKey(Eigen::Vector3i(coord(rng), coord(rng), coord(rng) / 8));
+		if (i % 3 == 2)
+		{
+			h.erase(key);
+			ref.erase(key);
+		}
+		else
+		{
+			const auto [v, is_new] = h.insert(key, static_cast<std::uint32_t>(i));
+			const auto r = ref.try_emplace(key, static_cast<std::uint32_t>(i));
+			ASSERT_EQ(is_new, r.second);
+			ASSERT_EQ(v, r.first->second);
+		}
+	}
+	ASSERT_EQ(h.size(), ref.size());
+	for (const auto& [k, v] : ref) ASSERT_EQ(h.find(k), v);
+	std::size_t n = 0;
+	h.forEach([&](std::uint64_t k, std::uint32_t v) {
+		EXPECT_EQ(ref.at(k), v);
+		++n;
+	});
+	EXPECT_EQ(n, ref.size());
+	EXPECT_EQ(h.find(voxelKey(Eigen::Vector3i(1000, 0, 0))), VoxelHash::kNone);
+}
+
+TEST(Map, KnnIsExactWithinHalfAVoxel)
+{
+	std::mt19937 rng(2);
+	std::uniform_real_distribution<float> U(-10, 10);
+	std::vector<Eigen::Vector3f> pts;
+	for (int i = 0; i < 5000; ++i) pts.emplace_back(U(rng), U(rng), 0.2f * U(rng));
+	VoxelMap map(2.0, 0.01, 1000);
+	ASSERT_EQ(map.insert(pts), pts.size());
+	for (int t = 0; t < 500; ++t)
+	{
+		const Eigen::Vector3f q(U(rng), U(rng), 0.2f * U(rng));
+		std::vector<float> d;
+		for (const auto& p : pts)
+			if ((p - q).norm() < 1.0f) d.push_back((p - q).norm());
+		std::sort(d.begin(), d.end());
+		Eigen::Vector3f nn[8];
+		const int n = map.knn(q, 8, 1.0f, nn);
+		ASSERT_EQ(n, static_cast<int>(std::min<std::size_t>(8, d.size())));
+		for (int i = 0; i < n; ++i) ASSERT_NEAR((nn[i] - q).norm(), d[i], 1e-5);
+	}
+}
+
+TEST(Map, OnePointPerCellAndFarVoxelsDropped)
+{
+	VoxelMap map(2.0, 0.5, 100);
+	std::vector<Eigen::Vector3f> pts;
+	for (int i = 0; i < 40; ++i)
+		for (int j = 0; j < 40; ++j) pts.emplace_back(0.1f * i + 0.01f, 0.1f * j + 0.01f, 0.05f);  // 4 m x 4 m
+	EXPECT_EQ(map.insert(pts), 64u);  // (4 / 0.5)^2 cells
+	EXPECT_EQ(map.insert(pts), 0u);  // revisiting adds nothing
+	EXPECT_EQ(map.numVoxels(), 4u);
+	std::vector<Eigen::Vector3f> far = {Eigen::Vector3f(100, 0, 0), Eigen::Vector3f(-100, 5, 0)};
+	map.insert(far);
+	EXPECT_EQ(map.numPoints(), 66u);
+	EXPECT_EQ(map.removeFar(Eigen::Vector3f::Zero(), 50.0f), 2u);
+	EXPECT_EQ(map.numPoints(), 64u);
+	EXPECT_EQ(map.numVoxels(), 4u);
+	std::vector<Eigen::Vector3f> all;
+	map.appendPoints(all);
+	EXPECT_EQ(all.size(), 64u);
+}
+
+TEST(Map, ScanToMapStaysBoundedOverFiveKilometres)
+{
+	// A scan-like point set (ground and two walls within 60 m) inserted every 5 m along a 5 km
+	// road: the map must stop growing once the vehicle is a map radius away from the start.
+	MappingOptions o;
+	o.map_radius = 80;
+	ScanToMap mapper(o);
+	std::mt19937 rng(3);
+	std::uniform_real_distribution<float> U(-60, 60), H(0, 8);
+	std::size_t at_start_plateau = 0, peak = 0;
+	for (int i = 0; i < 1000; ++i)
+	{
+		FeatureSet f;
+		for (int k = 0; k < 2000; ++k)
+		{
+			ScanPoint p;
+			const int kind = k % 3;
+			p.p = kind == 0 ? Eigen::Vector3f(U(rng), 0.25f * U(rng), -1.7f) : Eigen::Vector3f(U(rng), kind == 1 ? 12.f : -12.f, H(rng));
+			p.ring = k % 16;
+			f.less_flat.push_back(p);
+			if (k % 10 == 0) f.less_sharp.push_back(p);
+		}
+		std::sort(f.less_flat.begin(), f.less_flat.end(), [](const ScanPoint& a, const ScanPoint& b) { return a.ring < b.ring; });
+		Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+		T.translation().x() = 5.0 * i;
+		mapper.insert(f, T);
+		const std::size_t n = mapper.edgeMap().numPoints() + mapper.planeMap().numPoints();
+		if (i == 40) at_start_plateau = n;  // 200 m: more than a map diameter driven
+		peak = std::max(peak, n);
+	}
+	EXPECT_GT(at_start_plateau, 0u);
+	EXPECT_LT(peak, at_start_plateau * 11 / 10);
+}
+
+TEST(Map, LongDriveMapIsBounded)
+{
+	Path path;
+	path.add(100, 0.0);
+	path.add(50, 1.0 / 40);
+	path.add(100, 0.0);
+	const World w = urbanWorld(path, 5);
+	LoamOptions o = vlp16Options();
+	o.mapping.map_radius = 40;
+	LidarOdometry lo(o);
+	std::size_t at_80m = 0, peak = 0;
+	double max_err = 0;
+	const Eigen::Isometry3d T0 = lidarPoseAt(path, 0);
+	for (int i = 0; i * 2.5 < path.length(); ++i)
+	{
+		const Eigen::Isometry3d truth = lidarPoseAt(path, 2.5 * i);
+		const LidarOdometryResult r = lo.process(0.1 * i, scan(w, vlp16(), truth), std::nullopt);
+		const std::size_t n = r.map_edge_points + r.map_plane_points;
+		EXPECT_EQ(n, lo.mapPoints().size());
+		if (i == 32) at_80m = n;
+		peak = std::max(peak, n);
+		max_err = std::max(max_err, translationError(r.pose, T0.inverse() * truth));
+	}
+	std::printf("map points after 80 m: %zu, peak over 250 m: %zu, max position error %.3f m\n", at_80m, peak, max_err);
+	EXPECT_LT(peak, at_80m * 3 / 2);  // buildings vary along the street; no steady growth
+	EXPECT_LT(max_err, 0.5);
+}
+}  // namespace vlo::loam::test

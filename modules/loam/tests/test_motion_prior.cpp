@@ -1,0 +1,70 @@
+// Initial-guess providers: constant velocity and an external motion with fallback.
+#include <gtest/gtest.h>
+#include <vlo/loam/motion_prior.h>
+
+#include <limits>
+
+#include "test_helpers.h"
+
+namespace vlo::loam::test
+{
+namespace
+{
+Eigen::Isometry3d step(double x, double yaw_deg)
+{
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	T.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+	T.translation().x() = x;
+	return T;
+}
+}  // namespace
+
+TEST(MotionPrior, ConstantVelocityRepeatsTheLastMotion)
+{
+	ConstantVelocityPrior p;
+	EXPECT_TRUE(p.predict(0.0, std::nullopt).isApprox(Eigen::Isometry3d::Identity()));
+	EXPECT_EQ(p.lastSource(), "none");
+	p.update(0.0, Eigen::Isometry3d::Identity());
+	p.update(0.1, step(1.0, 2.0));
+	const Eigen::Isometry3d g = p.predict(0.2, step(9, 9));  // the external motion is ignored
+	EXPECT_EQ(p.lastSource(), "constant_velocity");
+	EXPECT_TRUE(g.isApprox(step(1.0, 2.0), 1e-9));
+	// A dropped frame: twice the time, twice the motion.
+	const Eigen::Isometry3d g2 = p.predict(0.3, std::nullopt);
+	EXPECT_NEAR(g2.translation().x(), 2.0, 1e-9);
+	EXPECT_NEAR(rotationAngle(g2.linear()) * 180 / M_PI, 4.0, 1e-9);
+	p.reset();
+	EXPECT_TRUE(p.predict(1.0, std::nullopt).isApprox(Eigen::Isometry3d::Identity()));
+}
+
+TEST(MotionPrior, ExternalUsedWhenPlausibleElseConstantVelocity)
+{
+	PriorOptions o;
+	o.source = "external";
+	auto p = makeMotionPrior(o);
+	p->update(0.0, Eigen::Isometry3d::Identity());
+	p->update(0.1, step(1.0, 1.0));
+	EXPECT_TRUE(p->predict(0.2, step(1.3, -2.0)).isApprox(step(1.3, -2.0), 1e-9));
+	EXPECT_EQ(p->lastSource(), "external");
+	EXPECT_TRUE(p->predict(0.2, std::nullopt).isApprox(step(1.0, 1.0), 1e-9));
+	EXPECT_EQ(p->lastSource(), "constant_velocity");
+
+	Eigen::Isometry3d nan = step(1, 0);
+	nan.translation().y() = std::numeric_limits<double>::quiet_NaN();
+	Eigen::Isometry3d sheared = step(1, 0);
+	sheared.linear()(0, 1) = 0.5;
+	for (const Eigen::Isometry3d& bad : {nan, step(50.0, 0.0), step(1.0, 90.0), sheared})
+	{
+		EXPECT_TRUE(p->predict(0.2, bad).isApprox(step(1.0, 1.0), 1e-9));
+		EXPECT_EQ(p->lastSource(), "constant_velocity");
+	}
+}
+
+TEST(MotionPrior, MadeByName)
+{
+	PriorOptions o;
+	EXPECT_NE(dynamic_cast<ConstantVelocityPrior*>(makeMotionPrior(o).get()), nullptr);
+	o.source = "external";
+	EXPECT_NE(dynamic_cast<ExternalPrior*>(makeMotionPrior(o).get()), nullptr);
+}
+}  // namespace vlo::loam::test

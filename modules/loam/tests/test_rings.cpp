@@ -1,0 +1,201 @@
+// Ring assignment from elevation, sweep timing from azimuth, dropping of invalid returns.
+#include <gtest/gtest.h>
+#include <vlo/core/error.h>
+#include <vlo/loam/rings.h>
+
+#include <cmath>
+#include <limits>
+
+#include "synthetic_world.h"
+#include "test_helpers.h"
+
+namespace vlo::loam::test
+{
+namespace
+{
+LidarPoint at(double range, double az_deg, double el_deg)
+{
+	const double a = az_deg * M_PI / 180, e = el_deg * M_PI / 180;
+	return LidarPoint{static_cast<float>(range * std::cos(e) * std::cos(a)), static_cast<float>(range * std::cos(e) * std::sin(a)),
+		static_cast<float>(range * std::sin(e)), 0.f};
+}
+}  // namespace
+
+TEST(Rings, FastAtan2IsAccurate)
+{
+	double worst = 0;
+	for (int i = 0; i < 3600; ++i)
+		for (double r : {0.01, 1.0, 80.0})
+		{
+			const double a = -M_PI + 2 * M_PI * i / 3600.0;
+			const float y = static_cast<float>(r * std::sin(a)), x = static_cast<float>(r * std::cos(a));
+			worst = std::max(worst, std::abs(std::remainder(fastAtan2(y, x) - std::atan2(y, x), 2 * M_PI)));
+		}
+	EXPECT_LT(worst, 2e-5);
+	EXPECT_EQ(fastAtan2(0.f, 0.f), 0.f);
+}
+
+TEST(Rings, Uniform16Beams)
+{
+	const RingModel m(vlp16Options().scan);
+	ASSERT_EQ(m.numRings(), 16);
+	for (int k = 0; k < 16; ++k)
+	{
+		const double e = -15.0 + 2.0 * k;
+		for (double de : {-0.9, 0.0, 0.9})  // anywhere within a beam's half spacing
+		{
+			if (std::abs(e + de) > 15.5) continue;  // beyond the field of view
+			const LidarPoint p = at(20.0, 33.0, e + de);
+			EXPECT_EQ(m.ringOf(p.z, std::hypot(p.x, p.y)), k) << "elevation " << e + de;
+		}
+	}
+	const LidarPoint below = at(20, 0, -15.6), above = at(20, 0, 15.6), edge = at(20, 0, -15.4);
+	EXPECT_EQ(m.ringOf(below.z, std::hypot(below.x, below.y)), -1);
+	EXPECT_EQ(m.ringOf(above.z, std::hypot(above.x, above.y)), -1);
+	EXPECT_EQ(m.ringOf(edge.z, std::hypot(edge.x, edge.y)), 0);  // within the 0.5 deg margin
+	EXPECT_EQ(m.ringOf(0.f, 0.f), -1);
+}
+
+TEST(Rings, Uniform32Beams)
+{
+	// HDL-32E: 32 beams from -30.67 to +10.67 deg.
+	ScanOptions o;
+	o.n_rings = 32;
+	o.vfov_min_deg = -30.67;
+	o.vfov_max_deg = 10.67;
+	const RingModel m(o);
+	ASSERT_EQ(m.numRings(), 32);
+	const double step = (10.67 + 30.67) / 31;
+	for (int k = 0; k < 32; ++k)
+	{
+		const LidarPoint p = at(25.0, -70.0, -30.67 + step * k + 0.3 * step);
+		EXPECT_EQ(m.ringOf(p.z, std::hypot(p.x, p.y)), k);
+	}
+}
+
+TEST(Rings, Hdl64TwoBlocks)
+{
+	const RingModel m(hdl64Options().scan);
+	ASSERT_EQ(m.numRings(), 64);
+	const std::vector<double> e = RingModel::hdl64Elevations();
+	std::vector<double> sorted = e;
+	std::sort(sorted.begin(), sorted.end());
+	for (int k = 0; k < 64; ++k)
+	{
+		const LidarPoint p = at(30.0, -120.0, sorted[k]);
+		EXPECT_EQ(m.ringOf(p.z, std::hypot(p.x, p.y)), k) << sorted[k];
+	}
+	// The two blocks' different spacing: 1/3 deg above -8.33 deg, 1/2 deg below -8.83 deg.
+	const LidarPoint upper = at(30, 0, 2.0 - 31 / 3.0 + 0.15), lower = at(30, 0, -8.83 - 0.2);
+	EXPECT_EQ(m.ringOf(upper.z, std::hypot(upper.x, upper.y)), 32);
+	EXPECT_EQ(m.ringOf(lower.z, std::hypot(lower.x, lower.y)), 31);
+}
+
+TEST(Rings, ExplicitTable)
+{
+	ScanOptions o;
+	o.ring_model = "table";
+	o.elevation_table_deg = {5.0, -3.0, 1.0, -20.0};  // any order
+	const RingModel m(o);
+	ASSERT_EQ(m.numRings(), 4);
+	EXPECT_DOUBLE_EQ(m.elevationsDeg()[0], -20.0);
+	const LidarPoint p = at(10, 0, 1.2);
+	EXPECT_EQ(m.ringOf(p.z, std::hypot(p.x, p.y)), 2);
+}
+
+TEST(Rings, BadModelOptionsNameTheKey)
+{
+	ScanOptions o;
+	o.ring_model = "velodyne";
+	try
+	{
+		RingModel m(o);
+		FAIL() << "no error";
+	}
+	catch (const InputError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("ring_model"), std::string::npos);
+	}
+	o = ScanOptions();
+	o.ring_model = "table";
+	EXPECT_THROW(RingModel{o}, InputError);  // empty table
+}
+
+TEST(Rings, PreprocessGroupsTimesAndDrops)
+{
+	ScanOptions o = vlp16Options().scan;
+	ScanPreprocessor pre(o);
+	PointCloud pc;
+	// Column-major sweep, clockwise from azimuth 180 deg, 360 columns of 16 beams.
+	for (int c = 0; c < 360; ++c)
+		for (int k = 0; k < 16; ++k) pc.push_back(at(10.0 + k, 180.0 - c, -15.0 + 2 * k));
+	const float nan = std::numeric_limits<float>::quiet_NaN();
+	pc.push_back(LidarPoint{nan, 1, 1, 0});
+	pc.push_back(LidarPoint{1, std::numeric_limits<float>::infinity(), 1, 0});
+	pc.push_back(at(1.0, 0, 0));  // too close
+	pc.push_back(at(500.0, 0, 0));  // too far
+	pc.push_back(at(20.0, 0, 40.0));  // above the field of view
+	const RingScan rs = pre.process(pc);
+	EXPECT_EQ(rs.n_input, pc.size());
+	EXPECT_EQ(rs.n_invalid, 2u);
+	EXPECT_EQ(rs.n_out_of_range, 2u);
+	EXPECT_EQ(rs.n_out_of_fov, 1u);
+	ASSERT_EQ(rs.points.size(), 360u * 16u);
+	for (int r = 0; r < 16; ++r)
+	{
+		ASSERT_EQ(rs.ringSize(r), 360u);
+		for (std::size_t i = rs.ring_begin[r]; i < rs.ring_begin[r + 1]; ++i)
+		{
+			const ScanPoint& p = rs.points[i];
+			EXPECT_EQ(p.ring, r);
+			EXPECT_NEAR(p.p.norm(), 10.0 + r, 1e-3);
+			EXPECT_NEAR(p.time, (i - rs.ring_begin[r]) / 360.0, 1e-4);  // 1 deg clockwise = 1/360 sweep
+		}
+	}
+}
+
+TEST(Rings, RingByRingOrderGivesTheSameRings)
+{
+	// KITTI stores a sweep ring by ring, each ring starting a little before or after the first point.
+	PointCloud col, ringwise;
+	for (int c = 0; c < 720; ++c)
+		for (int k = 0; k < 16; ++k) col.push_back(at(15, 180.0 - 0.5 * c, -15.0 + 2 * k));
+	for (int k = 0; k < 16; ++k)
+		for (int c = 0; c < 720; ++c) ringwise.push_back(at(15, 180.0 - 0.5 * c - (k == 0 ? 0 : 0.5 * (k % 3 - 1)), -15.0 + 2 * k));
+	ScanPreprocessor pre(vlp16Options().scan);
+	const RingScan a = pre.process(col), b = pre.process(ringwise);
+	ASSERT_EQ(a.points.size(), b.points.size());
+	for (int r = 0; r < 16; ++r)
+	{
+		ASSERT_EQ(a.ringSize(r), b.ringSize(r));
+		for (std::size_t i = b.ring_begin[r] + 1; i < b.ring_begin[r + 1]; ++i)
+			EXPECT_LE(b.points[i - 1].time, b.points[i].time);  // rotated into time order
+	}
+}
+
+TEST(Rings, RaycastScansLandOnTheirBeams)
+{
+	const Path path = [] {
+		Path p;
+		p.add(60, 0.0);
+		return p;
+	}();
+	const World w = urbanWorld(path, 1);
+	for (bool hdl : {false, true})
+	{
+		const LidarModel m = hdl ? hdl64() : vlp16();
+		const PointCloud pc = scan(w, m, lidarPoseAt(path, 10));
+		ScanPreprocessor pre(hdl ? hdl64Options().scan : vlp16Options().scan);
+		const RingScan rs = pre.process(pc);
+		EXPECT_EQ(rs.n_out_of_fov, 0u);
+		EXPECT_EQ(rs.populatedRings(100), hdl ? 64 : 16);
+		std::vector<double> el = m.elevations_deg;
+		std::sort(el.begin(), el.end());
+		for (const ScanPoint& p : rs.points)
+		{
+			const double e = std::atan2(p.p.z(), std::hypot(p.p.x(), p.p.y())) * 180 / M_PI;
+			ASSERT_NEAR(e, el[p.ring], 0.01);
+		}
+	}
+}
+}  // namespace vlo::loam::test

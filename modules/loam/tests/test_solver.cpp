@@ -1,0 +1,151 @@
+// Residual factors (analytic Jacobians), the robust pose solver and degeneracy detection.
+#include <ceres/ceres.h>
+#include <gtest/gtest.h>
+#include <vlo/loam/degeneracy.h>
+#include <vlo/loam/factors.h>
+#include <vlo/loam/pose_solver.h>
+
+#include <random>
+
+#include "test_helpers.h"
+
+namespace vlo::loam::test
+{
+namespace
+{
+Eigen::Isometry3d truePose()
+{
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	T.linear() = (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(-0.05, Eigen::Vector3d::UnitY()) *
+		Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitX()))
+					 .toRotationMatrix();
+	T.translation() = Eigen::Vector3d(1.2, -0.4, 0.1);
+	return T;
+}
+
+// Exact matches: source points p whose images T p lie on planes with the given normals, and on
+// vertical lines. A fraction are outliers (displaced by up to 1 m).
+Matches syntheticMatches(const Eigen::Isometry3d& T, const std::vector<Eigen::Vector3d>& normals, bool with_edges,
+	double outliers, unsigned seed)
+{
+	std::mt19937 rng(seed);
+	std::uniform_real_distribution<double> U(-20, 20), O(-1, 1), F(0, 1);
+	Matches m;
+	for (int i = 0; i < 300; ++i)
+		for (const Eigen::Vector3d& n0 : normals)
+		{
+			const Eigen::Vector3d n = n0.normalized();
+			const Eigen::Vector3d w(U(rng), U(rng), 0.2 * U(rng));
+			const double d = -n.dot(w) + (F(rng) < outliers ? O(rng) : 0.0);
+			m.planes.push_back(PlaneMatch{T.inverse() * w, n, d});
+		}
+	if (with_edges)
+		for (int i = 0; i < 100; ++i)
+		{
+			const Eigen::Vector3d w(U(rng), U(rng), 0.1 * U(rng));
+			m.edges.push_back(EdgeMatch{T.inverse() * w, w + Eigen::Vector3d(0.01 * U(rng), 0, 3.0), Eigen::Vector3d::UnitZ()});
+		}
+	return m;
+}
+
+// Central differences of a cost function's residuals with respect to both parameter blocks.
+void checkJacobians(const ceres::CostFunction& f, const double* q, const double* t)
+{
+	const int nr = f.num_residuals();
+	std::vector<double> r(nr), Jq(nr * 4), Jt(nr * 3), rp(nr), rm(nr);
+	const double* x[2] = {q, t};
+	double* J[2] = {Jq.data(), Jt.data()};
+	ASSERT_TRUE(f.Evaluate(x, r.data(), J));
+	for (int b = 0; b < 2; ++b)
+		for (int k = 0; k < (b ? 3 : 4); ++k)
+		{
+			double qq[4] = {q[0], q[1], q[2], q[3]}, tt[3] = {t[0], t[1], t[2]};
+			double* v = b ? tt : qq;
+			const double h = 1e-6, v0 = v[k];
+			v[k] = v0 + h;
+			const double* xp[2] = {qq, tt};
+			f.Evaluate(xp, rp.data(), nullptr);
+			v[k] = v0 - h;
+			f.Evaluate(xp, rm.data(), nullptr);
+			for (int i = 0; i < nr; ++i)
+				EXPECT_NEAR((b ? Jt[i * 3 + k] : Jq[i * 4 + k]), (rp[i] - rm[i]) / (2 * h), 1e-5) << "block " << b << " param " << k << " residual " << i;
+		}
+}
+}  // namespace
+
+TEST(Solver, AnalyticJacobiansMatchNumeric)
+{
+	const Eigen::Quaterniond q(truePose().rotation());
+	const double qc[4] = {q.x(), q.y(), q.z(), q.w()}, t[3] = {0.3, -0.2, 1.0};
+	const Matches m = syntheticMatches(truePose(), {{0, 0, 1}, {1, 0.2, 0}}, true, 0.3, 1);
+	checkJacobians(EdgeFactor(m.edges[0]), qc, t);
+	checkJacobians(PlaneFactor(m.planes[0]), qc, t);
+	ceres::HuberLoss huber(0.1);
+	ceres::CauchyLoss cauchy(0.1);
+	for (const ceres::LossFunction* loss : {static_cast<const ceres::LossFunction*>(&huber), static_cast<const ceres::LossFunction*>(&cauchy),
+			 static_cast<const ceres::LossFunction*>(nullptr)})
+		checkJacobians(BatchFactor(m.edges.data(), 5, m.planes.data(), 7, loss), qc, t);
+}
+
+TEST(Solver, BatchedBlocksHaveTheCostOfOneBlockPerMatch)
+{
+	const Matches m = syntheticMatches(truePose(), {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}, true, 0.3, 2);
+	double q[4] = {0.01, -0.02, 0.1, 0.99}, t[3] = {1.0, 0.0, 0.2};
+	Eigen::Map<Eigen::Quaterniond>(q).normalize();
+	ceres::HuberLoss loss(0.1);
+	ceres::Problem::Options po;
+	po.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+	po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+	ceres::Problem single(po), batched(po);
+	std::vector<std::unique_ptr<ceres::CostFunction>> keep;
+	for (const EdgeMatch& e : m.edges) single.AddResidualBlock(keep.emplace_back(new EdgeFactor(e)).get(), &loss, q, t);
+	for (const PlaneMatch& p : m.planes) single.AddResidualBlock(keep.emplace_back(new PlaneFactor(p)).get(), &loss, q, t);
+	batched.AddResidualBlock(keep.emplace_back(new BatchFactor(m.edges.data(), static_cast<int>(m.edges.size()), m.planes.data(),
+								 static_cast<int>(m.planes.size()), &loss)).get(),
+		nullptr, q, t);
+	double c1 = 0, c2 = 0;
+	single.Evaluate(ceres::Problem::EvaluateOptions(), &c1, nullptr, nullptr, nullptr);
+	batched.Evaluate(ceres::Problem::EvaluateOptions(), &c2, nullptr, nullptr, nullptr);
+	EXPECT_NEAR(c1, c2, 1e-9 * c1);
+}
+
+TEST(Solver, RecoversThePoseDespiteOutliers)
+{
+	const Eigen::Isometry3d truth = truePose();
+	const Matches m = syntheticMatches(truth, {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, true, 0.2, 3);
+	for (int block : {1, 64})
+		for (const char* loss : {"huber", "cauchy"})
+		{
+			SolverOptions o;
+			o.loss = loss;
+			o.matches_per_block = block;
+			o.max_solver_iterations = 10;
+			Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+			T.translation() = Eigen::Vector3d(1.0, -0.3, 0.0);
+			T.linear() = Eigen::AngleAxisd(0.25, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+			for (int round = 0; round < 3; ++round) solvePose(m, o, T);
+			EXPECT_LT(translationError(T, truth), 0.01) << loss << " " << block;
+			EXPECT_LT(rotationErrorDeg(T, truth), 0.05) << loss << " " << block;
+		}
+}
+
+TEST(Solver, DegeneracyFlagsAnUnconstrainedDirection)
+{
+	const Eigen::Isometry3d truth = truePose();
+	SolverOptions o;
+	Eigen::Matrix<double, 6, 6> H;
+	double rms = 0;
+	// Ground and walls along x only: nothing stops a slide along x.
+	evaluateMatches(syntheticMatches(truth, {{0, 0, 1}, {0, 1, 0}}, false, 0.0, 4), o, truth, H, rms);
+	const Degeneracy corridor = analyseDegeneracy(H, 10.0);
+	EXPECT_TRUE(corridor.degenerate);
+	EXPECT_LT(corridor.min_eigenvalue, 1e-6);
+	EXPECT_NEAR(std::abs(corridor.weakest(3)), 1.0, 1e-3);  // the x translation
+	EXPECT_LT(rms, 1e-9);
+
+	evaluateMatches(syntheticMatches(truth, {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}}, false, 0.0, 5), o, truth, H, rms);
+	const Degeneracy box = analyseDegeneracy(H, 10.0);
+	EXPECT_FALSE(box.degenerate);
+	EXPECT_GT(box.min_translation_eigenvalue, 100.0);
+}
+}  // namespace vlo::loam::test

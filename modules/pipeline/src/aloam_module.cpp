@@ -1,0 +1,72 @@
+// The A-LOAM reimplementation of modules/loam behind the pipeline's LidarOdometryModule interface.
+#include <vlo/loam/lidar_odometry.h>
+#include <vlo/pipeline/lidar_odometry_module.h>
+
+namespace vlo
+{
+namespace
+{
+class AloamModule : public LidarOdometryModule
+{
+   public:
+	void configure(RunConfig& config) override
+	{
+		config.load(opt_.scan, "loam.scan");
+		config.load(opt_.features, "loam.features");
+		config.load(opt_.odometry, "loam.odometry");
+		config.load(opt_.mapping, "loam.mapping");
+		config.load(opt_.prior, "loam.prior");
+		lo_ = std::make_unique<loam::LidarOdometry>(opt_);  // validates the options
+	}
+
+	Eigen::Isometry3d process(
+		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	{
+		if (!rig_set_)
+		{
+			vehicle_T_lidar_ = frame.rig.vehicle_T_lidar;
+			rig_set_ = true;
+		}
+		// A motion of the vehicle seen from the LiDAR: L = Tvl^-1 * V * Tvl.
+		std::optional<Eigen::Isometry3d> lidar_motion;
+		if (vehicle_motion) lidar_motion = vehicle_T_lidar_.inverse() * *vehicle_motion * vehicle_T_lidar_;
+		const auto r = lo_->process(frame.t, frame.scan, lidar_motion);
+
+		table.set("lo_status", std::string(loam::toString(r.status)));
+		table.set("lo_prior", r.prior_source);
+		table.set("lo_points", static_cast<long long>(r.n_valid));
+		table.set("lo_sharp", static_cast<long long>(r.n_sharp));
+		table.set("lo_flat", static_cast<long long>(r.n_flat));
+		table.set("lo_odom_iterations", static_cast<long long>(r.odometry.iterations));
+		table.set("lo_odom_rms_m", r.odometry.rms, 4);
+		table.set("lo_map_iterations", static_cast<long long>(r.mapping.iterations));
+		table.set("lo_map_rms_m", r.mapping.rms, 4);
+		table.set("lo_map_min_eigen", r.mapping.degeneracy.min_eigenvalue, 2);
+		table.set("lo_degenerate", r.mapping.degeneracy.degenerate);
+		table.set("lo_map_matches", static_cast<long long>(r.mapping.n_edges + r.mapping.n_planes));
+		table.set("lo_map_points", static_cast<long long>(r.map_edge_points + r.map_plane_points));
+		table.set("ms_lo_features", r.ms.preprocess + r.ms.features, 2);
+		table.set("ms_lo_odometry", r.ms.odometry, 2);
+		table.set("ms_lo_mapping", r.ms.mapping + r.ms.map_update, 2);
+		table.set("lo_reason", r.reason);
+		return vehicle_T_lidar_ * r.pose * vehicle_T_lidar_.inverse();
+	}
+
+   private:
+	loam::LoamOptions opt_;
+	std::unique_ptr<loam::LidarOdometry> lo_;
+	Eigen::Isometry3d vehicle_T_lidar_ = Eigen::Isometry3d::Identity();
+	bool rig_set_ = false;
+};
+}  // namespace
+
+Registry<LidarOdometryModule>& lidarOdometryRegistry()
+{
+	static Registry<LidarOdometryModule> registry = [] {
+		Registry<LidarOdometryModule> r;
+		r.add("aloam", [] { return std::make_unique<AloamModule>(); });
+		return r;
+	}();
+	return registry;
+}
+}  // namespace vlo

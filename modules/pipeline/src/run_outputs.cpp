@@ -1,0 +1,132 @@
+#include <vlo/core/atomic_file.h>
+#include <vlo/core/error.h>
+#include <vlo/io/pcd.h>
+#include <vlo/pipeline/run_outputs.h>
+#include <vlo/viz/map3d.h>
+#include <vlo/viz/projected_scan.h>
+#include <vlo/viz/topdown.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+namespace vlo
+{
+namespace
+{
+std::string jsonString(const std::string& s)
+{
+	std::string o = "\"";
+	for (char c : s)
+	{
+		if (c == '"' || c == '\\') o += '\\';
+		if (c == '\n') o += "\\n";
+		else o += c;
+	}
+	return o + "\"";
+}
+
+double maxStep(const Trajectory& t)
+{
+	double m = 0;
+	for (std::size_t i = 1; i < t.size(); ++i)
+		m = std::max(m, (t[i].pose.translation() - t[i - 1].pose.translation()).norm());
+	return m;
+}
+
+/// Snapshots are a convenience: a failure to render is reported, not fatal to the run.
+void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::string& gtPath)
+{
+	std::filesystem::create_directories(dir);
+	Trajectory gt;
+	if (!gtPath.empty())
+	{
+		// Only the part of the ground truth the run covered (it may have stopped early).
+		const double t0 = o.table.numbers("t").front() - 1e-6, t1 = o.table.numbers("t").back() + 1e-6;
+		for (const auto& p : readTum(gtPath))
+			if (p.t >= t0 && p.t <= t1) gt.push_back(p);
+		gt = relativeToFirst(gt);
+	}
+	std::vector<NamedTrajectory> trajs;
+	if (!o.lo.empty()) trajs.push_back({o.mode == "lo" ? "LiDAR odometry" : "VLO", o.lo, std::nullopt});
+	if (!o.vo.empty()) trajs.push_back({"visual odometry", o.vo, std::nullopt});
+	if (trajs.empty()) return;
+	TopDownStyle td;
+	td.title = "vlo-run (" + o.mode + "), " + std::to_string(o.table.rows()) + " frames";
+	renderTopDown(trajs, gt.empty() ? nullptr : &gt, dir + "/topdown.png", td);
+	if (!o.map.empty())
+	{
+		Map3DStyle ms;
+		ms.title = "map and trajectory";
+		renderMap3D(o.map, trajs, gt.empty() ? nullptr : &gt, dir + "/map3d.png", ms);
+	}
+	for (const auto& f : o.sample_frames)
+	{
+		if (!f.has_image || !f.has_scan) continue;
+		ProjectedScanStyle ps;
+		ps.title = "frame " + std::to_string(f.index);
+		char name[64];
+		std::snprintf(name, sizeof(name), "/frame_%06zu.png", f.index);
+		renderProjectedScan(f.image, f.scan, f.rig, dir + name, {}, ps);
+	}
+}
+}  // namespace
+
+void RunOutputs::addSampleFrame(const Frame& f)
+{
+	Frame copy = f;
+	copy.image = f.image.makeDeepCopy();  // the reader may reuse the image buffer
+	sample_frames.push_back(std::move(copy));
+}
+
+RunSummary RunOutputs::write(
+	const std::string& dir, const PipelineOptions& opt, const std::string& effectiveIni, const std::string& gtPath) const
+{
+	RunSummary s;
+	s.mode = mode;
+	const Trajectory& finalTraj = mode == "vo" ? vo : lo;
+	s.final_trajectory = "trajectory_" + mode + ".tum";
+	if (!lo.empty()) writeTum(dir + "/trajectory_lo.tum", lo);
+	if (!vo.empty()) writeTum(dir + "/trajectory_vo.tum", vo);
+	s.path_length_m = pathLength(finalTraj);
+	s.max_step_m = maxStep(finalTraj);
+	table.write(dir + "/frames.csv");
+	if (!map.empty()) writePcd(dir + "/map.pcd", map);
+	{
+		AtomicOutputFile ini(dir + "/run.ini");
+		ini.stream() << "# Effective options of this run (defaults included).\n" << effectiveIni;
+		ini.commit();
+	}
+	if (opt.snapshots)
+	{
+		try
+		{
+			writeSnapshots(dir + "/snapshots", *this, gtPath);
+		}
+		catch (const InputError&)
+		{
+			throw;  // a bad --gt file is the user's to fix
+		}
+		catch (const std::exception& e)
+		{
+			std::cerr << "vlo-run: warning: snapshots not written: " << e.what() << std::endl;
+		}
+	}
+	return s;
+}
+
+void writeSummaryJson(const std::string& path, const RunSummary& s, const RunRequest& req)
+{
+	AtomicOutputFile f(path);
+	auto& o = f.stream();
+	o << "{\n  \"mode\": " << jsonString(s.mode) << ",\n  \"rawlog\": " << jsonString(req.rawlog)
+	  << ",\n  \"ini\": " << jsonString(req.ini) << ",\n  \"frames\": " << s.frames
+	  << ",\n  \"seconds\": " << s.seconds << ",\n  \"ms_per_frame\": " << s.ms_per_frame
+	  << ",\n  \"path_length_m\": " << s.path_length_m << ",\n  \"max_step_m\": " << s.max_step_m
+	  << ",\n  \"trajectory\": " << jsonString(s.final_trajectory) << ",\n  \"reader\": " << jsonString(s.reader_stats)
+	  << "\n}\n";
+	f.commit();
+}
+}  // namespace vlo

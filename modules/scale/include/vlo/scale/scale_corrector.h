@@ -1,0 +1,36 @@
+#pragma once
+// The scale corrector (paper III-B): from images C(i-1), C(i), scan L(i-1) and the VO relative pose,
+// the factor s that turns the VO's units into metres. Stateless and deterministic: the same input
+// always gives the same estimate, so it can run on any frame pair in any order.
+#include <vlo/core/frame.h>
+#include <vlo/scale/diagnostics.h>
+#include <vlo/scale/options.h>
+
+#include <opencv2/core/mat.hpp>
+
+#include <Eigen/Geometry>
+
+namespace vlo::scale
+{
+class ScaleCorrector
+{
+   public:
+	/// Throws InputError for invalid options.
+	explicit ScaleCorrector(const ScaleOptions& opt = {});
+	const ScaleOptions& options() const { return opt_; }
+
+	/// `prev` = C(i-1), `cur` = C(i): 8-bit grey or BGR images of the camera's size. `prevScan` = L(i-1)
+	/// in the LiDAR frame, `camera_T_lidar` maps it into the camera optical frame. `cur_T_prev` =
+	/// T_{C(i-1)}^{C(i)} from the VO (X_i = R X_{i-1} + t, t in VO units). The result's scale s
+	/// multiplies VO lengths into metres: if the VO translation is k times too short, s = 1/k.
+	/// Throws InputError for images that do not match the camera.
+	ScaleEstimate estimate(const cv::Mat& prev, const PointCloud& prevScan, const cv::Mat& cur,
+		const PinholeCamera& cam, const Eigen::Isometry3d& camera_T_lidar, const Eigen::Isometry3d& cur_T_prev) const;
+
+	/// Same, from two frames of the pipeline (rig and image of `prev`, image of `cur`).
+	ScaleEstimate estimate(const Frame& prev, const Frame& cur, const Eigen::Isometry3d& cur_T_prev) const;
+
+   private:
+	ScaleOptions opt_;
+};
+}  // namespace vlo::scale

@@ -46,7 +46,7 @@ class AloamModule : public LidarOdometryModule
 		table.set("lo_map_matches", static_cast<long long>(r.mapping.n_edges + r.mapping.n_planes));
 		table.set("lo_map_points", static_cast<long long>(r.map_edge_points + r.map_plane_points));
 		table.set("ms_lo_features", r.ms.preprocess + r.ms.features, 2);
-		table.set("ms_lo_odometry", r.ms.odometry, 2);
+		table.set("ms_lo_odometry", r.ms.deskew + r.ms.odometry, 2);
 		table.set("ms_lo_mapping", r.ms.mapping + r.ms.map_update, 2);
 		table.set("lo_reason", r.reason);
 		return vehicle_T_lidar_ * r.pose * vehicle_T_lidar_.inverse();

@@ -66,6 +66,9 @@ void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig,
 			s.index = files.index;
 			s.t = files.t_scan;
 			const std::size_t dropped = readKittiBin(files.scan, s.scan);
+			// Single NaN returns are dropped with a warning; a scan with no valid point is corrupt.
+			if (s.scan.empty())
+				failInput(files.scan, dropped > 0 ? "every point is NaN or infinite" : "empty scan (no point)");
 			if (dropped > 0 && scans_with_invalid++ == 0) first_invalid = files.scan;
 			summary.invalid_points += dropped;
 			s.has_scan = true;

@@ -125,6 +125,13 @@ TEST(KittiOdometryBuilt, BadInputFailsNamingTheFileAndLeavesNoOutput)
 	EXPECT_NE(summary.warnings.back().find(seq + "/velodyne/000002.bin: 2 non-finite points dropped"), std::string::npos)
 		<< summary.warnings.back();
 	EXPECT_TRUE(summary.ground_truth.empty());  // poses/00.txt was removed above
+
+	// A scan with no valid point at all is corrupt: an error naming it, and no output.
+	writeKittiBin(seq + "/velodyne/000002.bin", {{nan, nan, nan, 0}, {1, nan, 1, 0}});
+	fs::remove_all(root + "/out");
+	expectInputError([&] { importKittiOdometry(opt); }, {seq + "/velodyne/000002.bin", "every point is NaN"});
+	writeKittiBin(seq + "/velodyne/000002.bin", {});
+	expectInputError([&] { importKittiOdometry(opt); }, {seq + "/velodyne/000002.bin", "empty scan"});
 }
 
 TEST(KittiRawBuilt, TimestampsOfEachSensorAreUsed)

@@ -3,7 +3,8 @@
 set -euo pipefail
 PKGS=(build-essential cmake pkg-config xz-utils
       libmrpt-dev mrpt-apps libopencv-dev libceres-dev libpcl-dev libeigen3-dev
-      libgtest-dev libbenchmark-dev libgl-dev libegl-dev parallel)
+      libgtest-dev libbenchmark-dev libgl-dev libegl-dev parallel
+      libegl-mesa0 libgl1-mesa-dri)  # headless rendering (EGL + llvmpipe) for the simulator and snapshots
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,24 +1,11 @@
 #include "vlo/loam/lidar_odometry.h"
 
 #include <vlo/core/se3.h>
+#include <vlo/core/stopwatch.h>
 #include <vlo/loam/deskew.h>
-
-#include <chrono>
 
 namespace vlo::loam
 {
-namespace
-{
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point& t0)
-{
-	const auto t1 = Clock::now();
-	const double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-	t0 = t1;
-	return ms;
-}
-}  // namespace
-
 const char* toString(FrameStatus s)
 {
 	switch (s)
@@ -84,7 +71,7 @@ LidarOdometryResult LidarOdometry::skip(LidarOdometryResult r, const std::string
 // Scan-to-scan then scan-to-map for features f; sets the status and the odometry/map poses.
 void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, Eigen::Isometry3d& odom, Eigen::Isometry3d& pose)
 {
-	auto t0 = Clock::now();
+	auto t0 = SteadyClock::now();
 	// Scan-to-scan, against the last usable scan (frames in between were skipped).
 	odom = odom_pose_ * r.guess;
 	if (opt_.odometry.enabled && odometry_.hasReference())
@@ -92,7 +79,7 @@ void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, E
 		r.odometry = odometry_.match(f, odom_ref_.inverse() * odom);
 		odom = odom_ref_ * r.odometry.T_prev_curr;
 	}
-	r.ms.odometry += msSince(t0);
+	r.ms.odometry += lapMs(t0);
 
 	// Scan-to-map from the odometry pose carried into the map frame.
 	pose = map_T_odom_ * odom;
@@ -107,7 +94,7 @@ void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, E
 	}
 	else if (!first && opt_.odometry.enabled && !r.odometry.ok)
 		r.status = FrameStatus::Degraded, r.reason = r.odometry.reason;
-	r.ms.mapping += msSince(t0);
+	r.ms.mapping += lapMs(t0);
 }
 
 LidarOdometryResult LidarOdometry::process(
@@ -115,7 +102,7 @@ LidarOdometryResult LidarOdometry::process(
 {
 	LidarOdometryResult r;
 	r.t = t;
-	const auto start = Clock::now();
+	const auto start = SteadyClock::now();
 	auto t0 = start;
 	r.guess = frames_ ? prior_->predict(t, prior_motion) : Eigen::Isometry3d::Identity();
 	r.prior_source = frames_ ? prior_->lastSource() : "none";
@@ -124,7 +111,7 @@ LidarOdometryResult LidarOdometry::process(
 	r.n_input = scan.size();
 	r.n_valid = rs.points.size();
 	r.n_rings = rs.populatedRings(1);
-	r.ms.preprocess = msSince(t0);
+	r.ms.preprocess = lapMs(t0);
 	if (rs.points.empty())
 		return skip(r, "no usable points (" + std::to_string(scan.size()) + " given: " + std::to_string(rs.n_invalid) +
 				" invalid, " + std::to_string(rs.n_out_of_range) + " out of range, " + std::to_string(rs.n_out_of_fov) +
@@ -138,7 +125,7 @@ LidarOdometryResult LidarOdometry::process(
 	r.n_less_sharp = raw.less_sharp.size();
 	r.n_flat = raw.flat.size();
 	r.n_less_flat = raw.less_flat.size();
-	r.ms.features = msSince(t0);
+	r.ms.features = lapMs(t0);
 	if (static_cast<int>(raw.sharp.size()) < opt_.features.min_sharp || static_cast<int>(raw.flat.size()) < opt_.features.min_flat)
 		return skip(r, "too few features (" + std::to_string(raw.sharp.size()) + " sharp, " + std::to_string(raw.flat.size()) + " flat)");
 
@@ -152,7 +139,7 @@ LidarOdometryResult LidarOdometry::process(
 		const Eigen::Isometry3d sweep = scaleMotion(motion, opt_.scan.scan_period / (t - *t_prev_));
 		FeatureSet d = raw;
 		for (ScanPoints* s : {&d.sharp, &d.less_sharp, &d.flat, &d.less_flat}) deskew(*s, sweep, opt_.scan.deskew_reference);
-		r.ms.deskew += msSince(t0);
+		r.ms.deskew += lapMs(t0);
 		return d;
 	};
 	Eigen::Isometry3d motion = r.guess, pose, odom;
@@ -164,24 +151,24 @@ LidarOdometryResult LidarOdometry::process(
 		const Eigen::Isometry3d found = pose_.inverse() * pose;
 		const Eigen::Isometry3d change = motion.inverse() * found;
 		motion = found;
-		t0 = Clock::now();
+		t0 = SteadyClock::now();
 		f = deskewed(motion);
 		if (r.passes >= opt_.scan.max_deskew_passes ||
 			(change.translation().norm() < opt_.scan.deskew_tolerance &&
 				rotationAngle(change.linear()) * 180.0 / M_PI < opt_.scan.deskew_tolerance_deg))
 			break;
 	}
-	t0 = Clock::now();
+	t0 = SteadyClock::now();
 	if (opt_.mapping.enabled) mapper_.insert(f, pose);
 	r.map_edge_points = mapper_.edgeMap().numPoints();
 	r.map_plane_points = mapper_.planeMap().numPoints();
-	r.ms.map_update = msSince(t0);
+	r.ms.map_update = lapMs(t0);
 
 	map_T_odom_ = pose * odom.inverse();
 	odom_pose_ = odom_ref_ = odom;
-	t0 = Clock::now();
+	t0 = SteadyClock::now();
 	if (opt_.odometry.enabled) odometry_.setReference(f);  // builds the search index: odometry time
-	r.ms.odometry += msSince(t0);
+	r.ms.odometry += lapMs(t0);
 	r.motion = frames_ ? pose_.inverse() * pose : Eigen::Isometry3d::Identity();
 	r.pose = pose;
 	prior_->update(t, r.motion);
@@ -189,7 +176,7 @@ LidarOdometryResult LidarOdometry::process(
 	t_prev_ = t;
 	++frames_;
 	features_ = std::move(f);
-	r.ms.total = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+	r.ms.total = msSince(start);
 	return r;
 }
 }  // namespace vlo::loam

@@ -1,5 +1,6 @@
 #include <vlo/core/error.h>
 #include <vlo/core/progress.h>
+#include <vlo/core/stopwatch.h>
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/io/trajectory.h>
 #include <vlo/pipeline/frame_table.h>
@@ -10,18 +11,12 @@
 #include <vlo/pipeline/run_outputs.h>
 #include <vlo/pipeline/visual_odometry_module.h>
 
-#include <chrono>
 #include <filesystem>
 
 namespace vlo
 {
 namespace
 {
-double msSince(std::chrono::steady_clock::time_point t0)
-{
-	return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 void prepareOutputDir(const std::string& dir)
 {
 	std::error_code ec;
@@ -65,7 +60,7 @@ RunSummary runPipeline(const RunRequest& req)
 	GlobalMap globalMap(popt.map_voxel, popt.map_max_range);
 	outputs.mode = popt.mode;
 	ProgressLine progress("vlo-run: frame", 0);
-	const auto loopStart = std::chrono::steady_clock::now();
+	const auto loopStart = SteadyClock::now();
 	Frame frame;
 	while ((popt.max_frames == 0 || outputs.table.rows() < std::size_t(popt.max_frames)) && reader.next(frame))
 	{
@@ -73,10 +68,10 @@ RunSummary runPipeline(const RunRequest& req)
 		table.newRow();
 		table.set("frame", static_cast<long long>(frame.index));
 		table.set("t", frame.t, 6);
-		const auto t0 = std::chrono::steady_clock::now();
+		const auto t0 = SteadyClock::now();
 		if (visual)
 		{
-			const auto t1 = std::chrono::steady_clock::now();
+			const auto t1 = SteadyClock::now();
 			const VisualOdometryStep step = visual->process(frame, table);
 			table.set("ms_vo", msSince(t1), 2);
 			if (step.pose) outputs.vo.push_back({frame.t, *step.pose});

@@ -1,4 +1,5 @@
 #include <vlo/core/error.h>
+#include <vlo/core/stopwatch.h>
 #include <vlo/scale/epipolar.h>
 #include <vlo/scale/keypoint_tests.h>
 #include <vlo/scale/projection.h>
@@ -10,21 +11,10 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include <chrono>
-
 namespace vlo::scale
 {
 namespace
 {
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point& t0)
-{
-	const auto t1 = Clock::now();
-	const double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-	t0 = t1;
-	return ms;
-}
-
 cv::Mat toGrey(const cv::Mat& m, const PinholeCamera& cam, const char* which)
 {
 	const std::string where = std::string("scale corrector: image ") + which;
@@ -59,13 +49,13 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 	const PinholeCamera& cam, const Eigen::Isometry3d& camera_T_lidar, const Eigen::Isometry3d& cur_T_prev) const
 {
 	if (!cam.valid()) failInput("scale corrector", "invalid camera intrinsics");
-	const auto start = Clock::now();
+	const auto start = SteadyClock::now();
 	auto t0 = start;
 	ScaleEstimate e;
 	auto finish = [&](Reason r) {
 		e.reason = r;
 		e.valid = r == Reason::Ok;
-		e.ms.total = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+		e.ms.total = msSince(start);
 		return e;
 	};
 	const cv::Mat prev = toGrey(prevIn, cam, "C(i-1)"), cur = toGrey(curIn, cam, "C(i)");
@@ -75,7 +65,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 	// Eq. 1: project L(i-1) into C(i-1).
 	const auto projected = projectScan(prevScan, cam, camera_T_lidar, opt_.min_depth, opt_.max_depth, opt_.border);
 	e.counts.projected = static_cast<int>(projected.size());
-	e.ms.project = msSince(t0);
+	e.ms.project = lapMs(t0);
 	if (projected.size() < minN) return finish(Reason::FewProjected);
 
 	// Corner + gradient tests, NMS.
@@ -94,7 +84,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 		e.keypoints.push_back(d);
 		pts.push_back(p.px);
 	}
-	e.ms.select = msSince(t0);
+	e.ms.select = lapMs(t0);
 	if (keypoints.size() < minN) return finish(Reason::FewKeypoints);
 	if (cur_T_prev.translation().squaredNorm() == 0) return finish(Reason::DegenerateMotion);
 
@@ -114,7 +104,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 		if (tracks[i].status != TrackStatus::Ok) d.rejected_by = Stage::Tracking;
 		else ++e.counts.tracked;
 	}
-	e.ms.track = msSince(t0);
+	e.ms.track = lapMs(t0);
 	if (static_cast<size_t>(e.counts.tracked) < minN) return finish(Reason::FewTracks);
 
 	// Culling: eqs. 2-4.
@@ -128,7 +118,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 		e.counts.epipolar_kept += c.rejected_by != Stage::Epipolar;
 		e.counts.gradient_kept += c.rejected_by == Stage::None;
 	}
-	e.ms.cull = msSince(t0);
+	e.ms.cull = lapMs(t0);
 	if (static_cast<size_t>(e.counts.gradient_kept) < minN) return finish(Reason::FewCulled);
 
 	// Triangulation and eq. 5.
@@ -154,7 +144,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 		owner.push_back(i);
 	}
 	e.counts.triangulated = static_cast<int>(s.size());
-	e.ms.triangulate = msSince(t0);
+	e.ms.triangulate = lapMs(t0);
 	if (s.size() < minN)
 		return finish(2 * lowParallax > e.counts.gradient_kept ? Reason::DegenerateMotion : Reason::FewTriangulated);
 
@@ -166,7 +156,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 	e.counts.inliers = r.n_inliers;
 	e.scale = r.mean, e.spread = r.stddev;
 	e.inlier_ratio = static_cast<double>(r.n_inliers) / static_cast<double>(s.size());
-	e.ms.ransac = msSince(t0);
+	e.ms.ransac = lapMs(t0);
 	const bool enough = static_cast<size_t>(r.n_inliers) >= minN && e.inlier_ratio >= opt_.min_inlier_ratio;
 	return finish(enough ? Reason::Ok : Reason::FewInliers);
 }

@@ -2,10 +2,16 @@
 
 namespace vlo
 {
+std::unique_ptr<VisualOdometryModule> makeOrbVisualOdometry();  // orb_vo_module.cpp
+
 Registry<VisualOdometryModule>& visualOdometryRegistry()
 {
-	// Visual odometry modules register here (none is built yet).
-	static Registry<VisualOdometryModule> registry;
+	// Visual odometry modules register here.
+	static Registry<VisualOdometryModule> registry = [] {
+		Registry<VisualOdometryModule> r;
+		r.add("orb", makeOrbVisualOdometry);
+		return r;
+	}();
 	return registry;
 }
 }  // namespace vlo

@@ -1,0 +1,73 @@
+// The ORB-SLAM2-style monocular VO of modules/vo behind the pipeline's VisualOdometryModule
+// interface ("orb"). Camera poses become vehicle poses through the rig's vehicle_T_camera.
+#include <opencv2/imgproc.hpp>
+#include <vlo/core/error.h>
+#include <vlo/pipeline/visual_odometry_module.h>
+#include <vlo/vo/visual_odometry.h>
+
+namespace vlo
+{
+namespace
+{
+class OrbVoModule : public VisualOdometryModule
+{
+   public:
+	void configure(RunConfig& config) override
+	{
+		config.load(opt_.orb, "vo.orb");
+		config.load(opt_.init, "vo.init");
+		config.load(opt_.tracking, "vo.tracking");
+		config.load(opt_.mapping, "vo.mapping");
+		opt_.validate();
+	}
+
+	VisualOdometryStep process(const Frame& frame, FrameTable& table) override
+	{
+		const std::string where = "frame " + std::to_string(frame.index);
+		if (!frame.has_image) failInput(where, "the visual odometry needs an image in every frame");
+		if (!vo_)
+		{
+			if (!frame.rig.has_camera || !frame.rig.camera.valid())
+				failInput(where, "no valid camera intrinsics in the rawlog for the visual odometry");
+			vo_ = std::make_unique<vo::VisualOdometry>(frame.rig.camera, opt_);
+			vehicle_T_camera_ = frame.rig.vehicle_T_camera;
+		}
+		cv::Mat gray = frame.image.asCvMatRef();
+		if (gray.channels() == 3) cv::cvtColor(gray, gray, cv::COLOR_BGR2GRAY);
+		const vo::VoFrameInfo info = vo_->process(gray, frame.t);
+
+		table.set("vo_state", std::string(vo::toString(info.state)));
+		table.set("vo_reason", info.reason);
+		table.set("vo_features", static_cast<long long>(info.features));
+		table.set("vo_matches", static_cast<long long>(info.matches));
+		table.set("vo_map_points", static_cast<long long>(info.map_points));
+		table.set("vo_keyframes", static_cast<long long>(info.keyframes));
+		table.set("vo_keyframe", info.keyframe);
+		table.set("vo_reinit", static_cast<long long>(info.reinits));
+		table.set("vo_metric", info.metric);
+		table.set("ms_vo_extract", info.ms_extract, 2);
+		table.set("ms_vo_track", info.ms_track, 2);
+		table.set("ms_vo_mapping", info.ms_mapping, 2);
+
+		// A camera motion C seen from the vehicle: V = Tvc * C * Tvc^-1. The lever arm of Tvc is in
+		// metres: in a map of unknown scale it is left out (camera path in vehicle axes), or it would
+		// bend the path by (I - R) t_vc against motions in map units.
+		Eigen::Isometry3d Tvc = vehicle_T_camera_;
+		if (!info.metric) Tvc.translation().setZero();
+		const auto toVehicle = [&](const Eigen::Isometry3d& C) { return Tvc * C * Tvc.inverse(); };
+		VisualOdometryStep step;
+		step.tracked = info.pose.has_value();
+		if (info.pose) step.pose = toVehicle(*info.pose);
+		if (info.motion) step.motion = toVehicle(*info.motion);
+		return step;
+	}
+
+   private:
+	vo::VoOptions opt_;
+	std::unique_ptr<vo::VisualOdometry> vo_;
+	Eigen::Isometry3d vehicle_T_camera_ = Eigen::Isometry3d::Identity();
+};
+}  // namespace
+
+std::unique_ptr<VisualOdometryModule> makeOrbVisualOdometry() { return std::make_unique<OrbVoModule>(); }
+}  // namespace vlo

@@ -1,0 +1,34 @@
+#pragma once
+// Owns the keyframes and map points of one map. Objects turned bad stay allocated until
+// collectGarbage(), which the composing class calls once per frame after dropping its references.
+#include <vlo/vo/keyframe.h>
+#include <vlo/vo/map_point.h>
+
+#include <memory>
+#include <vector>
+
+namespace vlo::vo
+{
+class Map
+{
+   public:
+	KeyFrame* addKeyFrame(long frame_index, double t, std::shared_ptr<const Features> f, const SE3& Tcw);
+	MapPoint* addPoint(const Vec3& pos, KeyFrame* ref);
+
+	/// Live keyframes in creation order.
+	std::vector<KeyFrame*> keyFrames() const;
+	std::size_t numKeyFrames() const;
+	std::size_t numPoints() const;
+	/// Live points, in creation order.
+	std::vector<MapPoint*> points() const;
+	/// Frees bad keyframes and points. No one may hold a pointer to them any more.
+	void collectGarbage();
+	/// Scales the map about the world origin (the first keyframe's camera for a fresh map).
+	void scale(double s);
+
+   private:
+	std::vector<std::unique_ptr<KeyFrame>> kfs_;
+	std::vector<std::unique_ptr<MapPoint>> points_;
+	long next_kf_ = 0, next_point_ = 0;
+};
+}  // namespace vlo::vo

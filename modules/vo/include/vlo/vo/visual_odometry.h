@@ -1,0 +1,109 @@
+#pragma once
+// Monocular visual odometry after ORB-SLAM2 (tracking and local mapping, no loop closing), single
+// threaded: process() extracts features, initialises a map or tracks the frame, and runs local
+// mapping inline when it makes a keyframe. After LOST a new map is initialised and placed where the
+// old trajectory left off, so the output trajectory continues (see doc/VO.md for its scale).
+//
+// For the scale corrector: each frame's relative motion and keypoints, the local window of the last
+// local bundle adjustment, rescaleLocalWindow() about the window's earliest keyframe, and
+// setMapScale() for the metric scale of a fresh map.
+#include <vlo/vo/features.h>
+#include <vlo/vo/geometry.h>
+#include <vlo/vo/options.h>
+
+#include <memory>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vlo::vo
+{
+enum class VoState
+{
+	NotInitialized,  ///< no map yet (or being re-initialised after LOST)
+	Ok,
+	Lost  ///< tracking failed at this frame; a new map is being initialised
+};
+const char* toString(VoState s);
+
+struct VoFrameInfo
+{
+	long index = -1;  ///< frames fed so far, from 0
+	double t = 0;
+	VoState state = VoState::NotInitialized;
+	std::string reason;  ///< how the frame was tracked, or why it was not
+	/// Camera pose in the trajectory frame (the camera at the first map's first keyframe), map units.
+	std::optional<SE3> pose;
+	/// Pose of this camera in the previous frame's camera (map units), when both are tracked in one map.
+	std::optional<SE3> motion;
+	int features = 0, matches = 0, map_points = 0, keyframes = 0;
+	int reinits = 0;  ///< maps started after the first one
+	int map_id = -1;  ///< counts maps from 0
+	bool keyframe = false;  ///< this frame became a keyframe
+	bool new_map = false;  ///< a map was initialised at this frame (its scale is arbitrary)
+	/// setMapScale() was called on the current map since it was made: map units are metres. Until
+	/// then lever arms (metric) cannot be combined with the poses.
+	bool metric = false;
+	double ms_extract = 0, ms_track = 0, ms_mapping = 0;
+	/// Local mapping detail when a keyframe was made: its stages and the bundle adjustment's size.
+	double ms_triangulate = 0, ms_fuse = 0, ms_ba = 0;
+	int new_points = 0, ba_keyframes = 0, ba_fixed = 0, ba_points = 0;
+};
+
+/// A copy of the local window: keyframes of the last local BA (optimised and fixed) and their points.
+struct LocalMapView
+{
+	struct KeyFrameView
+	{
+		long id = -1, frame_index = -1;
+		double t = 0;
+		SE3 Tcw = SE3::Identity();
+		bool fixed = false;  ///< held in the last local BA (observes its points); rescaled too
+	};
+	struct PointView
+	{
+		long id = -1;
+		Vec3 pos = Vec3::Zero();  ///< world (map) frame
+		int observations = 0;
+	};
+	long anchor_id = -1;  ///< the earliest keyframe, about which the window is rescaled
+	SE3 anchor_Tcw = SE3::Identity();
+	std::vector<KeyFrameView> keyframes;  ///< by id, optimised and fixed
+	std::vector<PointView> points;
+};
+
+class VisualOdometry
+{
+   public:
+	/// Throws InputError for invalid options or camera.
+	VisualOdometry(const PinholeCamera& cam, const VoOptions& opt);
+	~VisualOdometry();
+	VisualOdometry(const VisualOdometry&) = delete;
+	VisualOdometry& operator=(const VisualOdometry&) = delete;
+
+	/// gray: 8-bit, one channel, the camera's size. Never throws for image content (blank, dark).
+	VoFrameInfo process(const cv::Mat& gray, double t);
+
+	// --- scale corrector interface ---
+	const VoFrameInfo& lastInfo() const;
+	/// Keypoints and descriptors of the last frame processed.
+	std::shared_ptr<const Features> currentFeatures() const;
+	/// Map point id per keypoint of the last frame (-1: none), empty when it was not tracked.
+	std::vector<long> currentPointIds() const;
+	VoState state() const;
+	LocalMapView localMap() const;
+	/// Scales the local window (keyframes of the last local BA, optimised and fixed, and their points)
+	/// by s about its earliest optimised keyframe, and the current pose and motion model with it; the
+	/// output trajectory stays continuous (later motions are s times longer). False without a map.
+	bool rescaleLocalWindow(double s);
+	/// Scales the whole current map about its origin (first keyframe), with the current pose and
+	/// motion model: for the metric scale right after initialisation (output stays continuous).
+	/// False without a map.
+	bool setMapScale(double s);
+
+   private:
+	struct Impl;
+	std::unique_ptr<Impl> impl_;
+};
+}  // namespace vlo::vo

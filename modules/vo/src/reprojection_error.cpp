@@ -1,0 +1,83 @@
+#include "reprojection_error.h"
+
+#include <cmath>
+
+namespace vlo::vo::detail
+{
+Mat3 rotationFromParams(const double* p)
+{
+	const Vec3 v(p[0], p[1], p[2]);
+	const double a = v.norm();
+	return a < 1e-12 ? Mat3::Identity() : Eigen::AngleAxisd(a, v / a).toRotationMatrix();
+}
+
+Eigen::Matrix3d rotatedPointJacobian(const Mat3& R, const Vec3& w, const Vec3& X)
+{
+	const double t = w.norm();
+	const Mat3 W = skew(w);
+	Mat3 Jr = Mat3::Identity();
+	if (t > 1e-8)
+		Jr += -(1 - std::cos(t)) / (t * t) * W + (t - std::sin(t)) / (t * t * t) * W * W;
+	else
+		Jr += -0.5 * W;
+	return -R * skew(X) * Jr;
+}
+
+bool ReprojectionError::Evaluate(double const* const* p, double* r, double** J) const
+{
+	const double* pose = p[0];
+	const Vec3 X(p[1][0], p[1][1], p[1][2]);
+	const Mat3 R = rotationFromParams(pose);
+	const Vec3 Xc = R * X + Vec3(pose[3], pose[4], pose[5]);
+	// A point behind the camera (an outlier) still gets a finite residual, as with autodiff: failing
+	// the evaluation would stop the whole solve at its first iteration.
+	const double z = std::abs(Xc.z()) < 1e-9 ? (Xc.z() < 0 ? -1e-9 : 1e-9) : Xc.z();
+	const double iz = 1.0 / z;
+	r[0] = (c_.fx * Xc.x() * iz + c_.cx - obs_.x()) * w_;
+	r[1] = (c_.fy * Xc.y() * iz + c_.cy - obs_.y()) * w_;
+	if (!J) return true;
+	Eigen::Matrix<double, 2, 3> Jp;
+	Jp << c_.fx * iz, 0, -c_.fx * Xc.x() * iz * iz, 0, c_.fy * iz, -c_.fy * Xc.y() * iz * iz;
+	Jp *= w_;
+	if (J[0])
+	{
+		Eigen::Map<Eigen::Matrix<double, 2, 6, Eigen::RowMajor>> Jpose(J[0]);
+		Jpose.leftCols<3>() = Jp * rotatedPointJacobian(R, Vec3(pose[0], pose[1], pose[2]), X);
+		Jpose.rightCols<3>() = Jp;
+	}
+	if (J[1])
+	{
+		Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>> Jx(J[1]);
+		Jx = Jp * R;
+	}
+	return true;
+}
+
+bool PoseOnlyError::Evaluate(double const* const* p, double* r, double** J) const
+{
+	const double* params[2] = {p[0], X_.data()};
+	double* jac[2] = {J ? J[0] : nullptr, nullptr};
+	return e_.Evaluate(params, r, J ? jac : nullptr);
+}
+
+void toParams(const SE3& T, double* p)
+{
+	const Eigen::AngleAxisd aa(T.linear());
+	const Vec3 v = aa.axis() * aa.angle();
+	p[0] = v.x(), p[1] = v.y(), p[2] = v.z();
+	p[3] = T.translation().x(), p[4] = T.translation().y(), p[5] = T.translation().z();
+}
+
+SE3 fromParams(const double* p) { return makeSE3(rotationFromParams(p), Vec3(p[3], p[4], p[5])); }
+
+ceres::Solver::Options solverOptions(int iterations, bool schur)
+{
+	ceres::Solver::Options o;
+	o.max_num_iterations = iterations;
+	o.linear_solver_type = schur ? ceres::DENSE_SCHUR : ceres::DENSE_QR;
+	o.num_threads = 1;  // deterministic runs
+	o.logging_type = ceres::SILENT;
+	o.minimizer_progress_to_stdout = false;
+	return o;
+}
+}  // namespace vlo::vo::detail

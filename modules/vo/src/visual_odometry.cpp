@@ -1,0 +1,180 @@
+#include <vlo/core/error.h>
+#include <vlo/core/se3.h>
+
+#include <chrono>
+
+#include "vo_impl.h"
+
+namespace vlo::vo
+{
+namespace
+{
+double msSince(std::chrono::steady_clock::time_point t0)
+{
+	return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+const char* toString(VoState s)
+{
+	switch (s)
+	{
+		case VoState::Ok: return "OK";
+		case VoState::Lost: return "LOST";
+		default: return "NOT_INITIALIZED";
+	}
+}
+
+VisualOdometry::Impl::Impl(const PinholeCamera& c, const VoOptions& o)
+	: cam(c),
+	  opt(o),
+	  extractor(opt.orb),
+	  tracker(cam, extractor.pyramid(), opt.tracking),
+	  init(cam, extractor.pyramid(), opt.init, opt.tracking, opt.mapping)
+{
+}
+
+VisualOdometry::VisualOdometry(const PinholeCamera& cam, const VoOptions& opt)
+{
+	if (!cam.valid()) failInput("camera", "invalid intrinsics for the visual odometry");
+	opt.validate();
+	impl_ = std::make_unique<Impl>(cam, opt);
+}
+
+VisualOdometry::~VisualOdometry() = default;
+
+VoFrameInfo VisualOdometry::process(const cv::Mat& gray, double t) { return impl_->process(gray, t); }
+
+VoFrameInfo VisualOdometry::Impl::process(const cv::Mat& gray, double t)
+{
+	if (gray.type() != CV_8UC1 || gray.cols != cam.width || gray.rows != cam.height)
+		failInput("image", "the visual odometry needs 8-bit gray images of the camera's size");
+	info = VoFrameInfo();
+	info.index = frames++;
+	info.t = t;
+	auto t0 = std::chrono::steady_clock::now();
+	current_feat = std::make_shared<Features>(extractor.extract(gray));
+	info.ms_extract = msSince(t0);
+	info.features = static_cast<int>(current_feat->size());
+	TrackedFrame cur(info.index, t, current_feat);
+
+	t0 = std::chrono::steady_clock::now();
+	if (state == VoState::Ok)
+	{
+		if (track(cur, info))
+		{
+			if (last.has_pose) info.motion = last.Tcw * cur.Tcw.inverse();
+		}
+		else
+		{
+			const std::string why = info.reason;
+			lose();
+			cur.clearMatches();  // they point into the map just dropped
+			cur.ref_kf = nullptr;
+			cur.has_pose = false;
+			initialise(cur, info);  // this frame becomes the new reference
+			info.reason = "LOST: " + why + "; " + info.reason;
+		}
+	}
+	else
+		initialise(cur, info);
+	info.ms_track = msSince(t0) - info.ms_mapping;
+
+	// Untracked frames stay LOST from a tracking failure until a new map is made.
+	info.state = cur.has_pose ? VoState::Ok : state;
+	if (cur.has_pose)
+	{
+		info.pose = traj_T_map * cur.Tcw.inverse();
+		cur.resolvePoints();
+		if (cur.ref_kf && cur.ref_kf->bad) cur.ref_kf = last_kf;
+		last = std::move(cur);
+	}
+	else
+		last = TrackedFrame();
+	if (mapper) mapper->scrub();
+	if (map) map->collectGarbage();
+	info.map_points = map ? static_cast<int>(map->numPoints()) : 0;
+	info.keyframes = map ? static_cast<int>(map->numKeyFrames()) : 0;
+	info.reinits = reinits;
+	info.map_id = map_id;
+	info.metric = map && metric;
+	return info;
+}
+
+bool VisualOdometry::Impl::track(TrackedFrame& cur, VoFrameInfo& inf)
+{
+	std::string why;
+	bool ok = false;
+	if (has_velocity) ok = tracker.withMotionModel(cur, last, velocity, why);
+	const char* how = "motion model";
+	if (!ok)
+	{
+		KeyFrame* ref = (last.ref_kf && !last.ref_kf->bad) ? last.ref_kf : last_kf;
+		const SE3 start = has_velocity ? velocity * last.Tcw : last.Tcw;
+		ok = ref && tracker.withReferenceKeyFrame(cur, ref, start, why);
+		how = "reference keyframe";
+	}
+	if (!ok)
+	{
+		inf.reason = why;
+		return false;
+	}
+	const int inliers = tracker.withLocalMap(cur);
+	inf.matches = inliers;
+	if (inliers < opt.tracking.min_local_inliers)
+	{
+		inf.reason = "local map: " + std::to_string(inliers) + " inliers (< " +
+					 std::to_string(opt.tracking.min_local_inliers) + ")";
+		return false;
+	}
+	cur.has_pose = true;
+	inf.reason = how;
+	if (tracker.needKeyFrame(inliers, cur.ref_kf, cur.index - last_kf_frame, map->numKeyFrames())) insertKeyFrame(cur, inf);
+	velocity = cur.Tcw * last.Tcw.inverse();
+	has_velocity = true;
+	return true;
+}
+
+void VisualOdometry::Impl::insertKeyFrame(TrackedFrame& cur, VoFrameInfo& inf)
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	KeyFrame* kf = map->addKeyFrame(cur.index, cur.t, cur.feat, cur.Tcw);
+	for (std::size_t i = 0; i < cur.size(); ++i)
+		if (cur.points[i] && !cur.points[i]->bad) kf->points[i] = cur.points[i];
+	const MappingStats st = mapper->process(kf);
+	inf.ms_triangulate = st.ms_triangulate;
+	inf.ms_fuse = st.ms_fuse;
+	inf.ms_ba = st.ms_ba;
+	inf.new_points = st.new_points;
+	inf.ba_keyframes = st.ba.keyframes;
+	inf.ba_fixed = st.ba.fixed;
+	inf.ba_points = st.ba.points;
+	cur.Tcw = kf->Tcw;  // the frame is the keyframe: take its bundle-adjusted pose
+	cur.ref_kf = kf;
+	last_kf = kf;
+	last_kf_frame = cur.index;
+	inf.keyframe = true;
+	inf.ms_mapping += msSince(t0);
+}
+
+void VisualOdometry::Impl::lose()
+{
+	if (last.has_pose)
+	{
+		LostTrack l;
+		l.pose = traj_T_map * last.Tcw.inverse();
+		l.velocity = has_velocity ? velocity : SE3::Identity();
+		l.index = last.index;
+		const double d = last_kf ? last_kf->medianDepth() : 0;
+		l.median_depth = d > 0 ? d : 1.0;
+		lost = l;
+	}
+	last = TrackedFrame();
+	mapper.reset();
+	map.reset();
+	last_kf = nullptr;
+	has_velocity = false;
+	init.reset();
+	state = VoState::Lost;
+}
+}  // namespace vlo::vo

@@ -1,0 +1,104 @@
+// What the scale corrector sees of, and does to, the visual odometry.
+#include <algorithm>
+#include <unordered_set>
+
+#include "vo_impl.h"
+
+namespace vlo::vo
+{
+const VoFrameInfo& VisualOdometry::lastInfo() const { return impl_->info; }
+std::shared_ptr<const Features> VisualOdometry::currentFeatures() const { return impl_->current_feat; }
+VoState VisualOdometry::state() const { return impl_->state; }
+
+std::vector<long> VisualOdometry::currentPointIds() const
+{
+	std::vector<long> ids;
+	if (!impl_->last.has_pose) return ids;
+	for (const MapPoint* p : impl_->last.points) ids.push_back(p && !p->bad ? p->id : -1);
+	return ids;
+}
+
+namespace
+{
+/// The keyframes rescaled with the window: the optimised ones and the fixed ones of its last bundle
+/// adjustment, which share its points (left alone, they would pull the next BA back to the old scale).
+std::vector<KeyFrame*> windowKeyFrames(const BundleWindow& w)
+{
+	std::vector<KeyFrame*> out = w.local;
+	out.insert(out.end(), w.fixed.begin(), w.fixed.end());
+	return out;
+}
+
+/// Live points of those keyframes, each once, in keyframe then keypoint order.
+std::vector<MapPoint*> windowPoints(const BundleWindow& w)
+{
+	std::vector<MapPoint*> out;
+	std::unordered_set<const MapPoint*> seen;
+	for (KeyFrame* kf : windowKeyFrames(w))
+		for (MapPoint* p : kf->points)
+			if (p && !p->bad && seen.insert(p).second) out.push_back(p);
+	return out;
+}
+}  // namespace
+
+LocalMapView VisualOdometry::localMap() const
+{
+	LocalMapView v;
+	if (!impl_->mapper || !impl_->mapper->window().anchor) return v;
+	const BundleWindow& w = impl_->mapper->window();
+	v.anchor_id = w.anchor->id;
+	v.anchor_Tcw = w.anchor->Tcw;
+	for (const KeyFrame* kf : w.local) v.keyframes.push_back({kf->id, kf->frame_index, kf->t, kf->Tcw, false});
+	for (const KeyFrame* kf : w.fixed) v.keyframes.push_back({kf->id, kf->frame_index, kf->t, kf->Tcw, true});
+	std::sort(v.keyframes.begin(), v.keyframes.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+	for (const MapPoint* p : windowPoints(w)) v.points.push_back({p->id, p->pos, p->numObservations()});
+	return v;
+}
+
+void VisualOdometry::Impl::rescaleCurrent(const std::function<void(SE3&)>& f, double s)
+{
+	// The output trajectory stays continuous: the pose just output is kept, later motions scale.
+	if (last.has_pose)
+	{
+		const SE3 pose = traj_T_map * last.Tcw.inverse();
+		f(last.Tcw);
+		traj_T_map = pose * last.Tcw;
+	}
+	velocity.translation() *= s;
+}
+
+void VisualOdometry::Impl::scaleAbout(SE3& T, const SE3& Ta, double s)
+{
+	SE3 Tr = T * Ta.inverse();  // pose relative to the anchor camera
+	Tr.translation() *= s;
+	T = Tr * Ta;
+}
+
+bool VisualOdometry::rescaleLocalWindow(double s)
+{
+	auto& m = *impl_;
+	if (!m.map || !m.mapper || !(s > 0) || !m.mapper->window().anchor) return false;
+	const BundleWindow& w = m.mapper->window();
+	const SE3 Ta = w.anchor->Tcw, Ta_inv = Ta.inverse();
+	for (MapPoint* p : windowPoints(w))
+	{
+		p->pos = Ta_inv * (s * (Ta * p->pos));
+		p->min_dist *= s;
+		p->max_dist *= s;
+	}
+	for (KeyFrame* kf : windowKeyFrames(w)) Impl::scaleAbout(kf->Tcw, Ta, s);
+	m.rescaleCurrent([&](SE3& T) { Impl::scaleAbout(T, Ta, s); }, s);
+	return true;
+}
+
+bool VisualOdometry::setMapScale(double s)
+{
+	auto& m = *impl_;
+	if (!m.map || !(s > 0)) return false;
+	m.map->scale(s);
+	m.rescaleCurrent([&](SE3& T) { T.translation() *= s; }, s);
+	m.metric = true;
+	m.info.metric = true;
+	return true;
+}
+}  // namespace vlo::vo

@@ -1,0 +1,64 @@
+// The analytic Jacobians of the reprojection residuals against Ceres' automatic differentiation.
+#include <ceres/rotation.h>
+#include <gtest/gtest.h>
+
+#include "../src/reprojection_error.h"
+#include "synthetic_scene.h"
+
+using namespace vlo;
+using namespace vlo::vo;
+
+namespace
+{
+struct AutoReprojection
+{
+	Vec2 obs;
+	double w;
+	PinholeCamera c;
+	template <typename T>
+	bool operator()(const T* pose, const T* point, T* r) const
+	{
+		T p[3];
+		ceres::AngleAxisRotatePoint(pose, point, p);
+		for (int i = 0; i < 3; ++i) p[i] += pose[3 + i];
+		r[0] = (T(c.fx) * p[0] / p[2] + T(c.cx) - T(obs.x())) * T(w);
+		r[1] = (T(c.fy) * p[1] / p[2] + T(c.cy) - T(obs.y())) * T(w);
+		return true;
+	}
+};
+}  // namespace
+
+TEST(Reprojection, AnalyticJacobiansMatchAutodiff)
+{
+	const auto cam = test::kittiCamera();
+	const Vec2 obs(400.5, 200.25);
+	const double w = 1 / 1.44;
+	detail::ReprojectionError analytic(obs, w, cam);
+	ceres::AutoDiffCostFunction<AutoReprojection, 2, 6, 3> autodiff(new AutoReprojection{obs, w, cam});
+	for (const double angle : {0.0, 1e-9, 0.3, 2.5})
+	{
+		double pose[6] = {angle * 0.6, -angle * 0.8, angle * 0.1, 0.3, -0.2, 1.5};
+		double X[3] = {2.0, -1.0, 12.0};
+		const double* params[2] = {pose, X};
+		double ra[2], rb[2], ja0[12], ja1[6], jb0[12], jb1[6];
+		double* ja[2] = {ja0, ja1};
+		double* jb[2] = {jb0, jb1};
+		ASSERT_TRUE(analytic.Evaluate(params, ra, ja));
+		ASSERT_TRUE(autodiff.Evaluate(params, rb, jb));
+		for (int i = 0; i < 2; ++i) EXPECT_NEAR(ra[i], rb[i], 1e-9);
+		for (int i = 0; i < 12; ++i) EXPECT_NEAR(ja0[i], jb0[i], 1e-6 * (1 + std::abs(jb0[i]))) << "angle " << angle << " d/dpose " << i;
+		for (int i = 0; i < 6; ++i) EXPECT_NEAR(ja1[i], jb1[i], 1e-6 * (1 + std::abs(jb1[i]))) << "d/dX " << i;
+	}
+	// Pose-only: the same numbers for the pose block.
+	const Vec3 X(1, 2, 10);
+	detail::PoseOnlyError pose_only(X, obs, w, cam);
+	double pose[6] = {0.1, 0.2, -0.1, 0, 0, 1};
+	const double* p1[1] = {pose};
+	const double* p2[2] = {pose, X.data()};
+	double r1[2], r2[2], j1[12], j2a[12], j2b[6];
+	double* J1[1] = {j1};
+	double* J2[2] = {j2a, j2b};
+	ASSERT_TRUE(pose_only.Evaluate(p1, r1, J1));
+	ASSERT_TRUE(analytic.Evaluate(p2, r2, J2));
+	for (int i = 0; i < 12; ++i) EXPECT_DOUBLE_EQ(j1[i], j2a[i]);
+}

@@ -21,6 +21,7 @@ int main(int argc, char** argv)
 				{"kitti-dir", "DIR", "also write the KITTI odometry layout (sequence 00) to DIR"},
 				{"lidar-distortion", "", "each LiDAR firing at its own time over the 0.1 s sweep"},
 				{"no-noise", "", "no image noise, range noise or dropouts (for checks)"},
+				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
 				{"quiet", "", "no progress line and no summary"}});
 		if (cl.helpRequested())
 		{
@@ -40,6 +41,16 @@ int main(int argc, char** argv)
 		cfg.kitti_poses = cl.get("trajectory");
 		cfg.lidar_distortion = cl.has("lidar-distortion");
 		if (cl.has("no-noise")) cfg.range_noise = cfg.image_noise = cfg.dropout = 0;
+		if (cl.has("blackout"))
+		{
+			const std::string b = cl.get("blackout");
+			int first = -1, end = -1;
+			char extra = 0;
+			if (std::sscanf(b.c_str(), "%d:%d%c", &first, &end, &extra) != 2 || first < 0 || end <= first)
+				vlo::failInput("--blackout " + b, "expected A:B with 0 <= A < B (frames A..B-1)");
+			cfg.blackout_first = first;
+			cfg.blackout_end = end;
+		}
 		const bool quiet = cl.has("quiet");
 
 		std::string cmd = "vlo-sim";

@@ -16,7 +16,8 @@ run_case() {
 	local name=$1 lidar=$2 ini=$3 frames=$4 terr=$5 ate=$6
 	"$BIN/vlo-sim" --scenario urban --lidar "$lidar" --frames "$frames" --seed 5 --out "$name.rawlog" --quiet ||
 		{ fail "$name: vlo-sim failed"; return; }
-	"$BIN/vlo-run" --rawlog "$name.rawlog" --ini "$INI/$ini" --out "out_$name" --gt "$name.gt.tum" --quiet ||
+	"$BIN/vlo-run" --rawlog "$name.rawlog" --ini "$INI/$ini" --out "out_$name" --gt "$name.gt.tum" --quiet \
+		--set pipeline.mode=lo ||
 		{ fail "$name: vlo-run failed"; return; }
 	for f in trajectory_lo.tum frames.csv map.pcd run.ini summary.json snapshots/topdown.png snapshots/map3d.png; do
 		[ -s "out_$name/$f" ] || fail "$name: $f missing"

@@ -48,9 +48,21 @@ bool ExternalPrior::plausible(const Eigen::Isometry3d& T) const
 	return T.translation().norm() <= opt_.max_translation && rotationAngle(R) * 180.0 / M_PI <= opt_.max_rotation_deg;
 }
 
+bool ExternalPrior::agrees(const Eigen::Isometry3d& external, const Eigen::Isometry3d& cv) const
+{
+	const Eigen::Isometry3d d = cv.inverse() * external;
+	return d.translation().norm() <= opt_.max_deviation &&
+		rotationAngle(orthonormalize(d.linear())) * 180.0 / M_PI <= opt_.max_deviation_deg;
+}
+
 Eigen::Isometry3d ExternalPrior::predict(double t, const std::optional<Eigen::Isometry3d>& external)
 {
 	const Eigen::Isometry3d cv = fallback_.predict(t, std::nullopt);
+	if (external && plausible(*external) && fallback_.hasVelocity() && !agrees(*external, cv))
+	{
+		source_ = "constant_velocity (external rejected)";
+		return cv;
+	}
 	if (external && plausible(*external))
 	{
 		source_ = "external";

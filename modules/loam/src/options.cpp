@@ -14,6 +14,8 @@ void PriorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, co
 	source = c.read_string_first_word(s, "source", source);
 	VLO_NUM(max_translation, double);
 	VLO_NUM(max_rotation_deg, double);
+	VLO_NUM(max_deviation, double);
+	VLO_NUM(max_deviation_deg, double);
 }
 
 void PriorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -21,6 +23,8 @@ void PriorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std:
 	MRPT_SAVE_CONFIG_VAR_COMMENT(source, "constant_velocity (A-LOAM) | external (e.g. visual odometry)");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(max_translation, "external motion longer than this is rejected [m]");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(max_rotation_deg, "external motion turning more is rejected [deg]");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(max_deviation, "external motion this far from constant velocity is rejected [m]");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(max_deviation_deg, "... or turning this differently [deg]");
 }
 
 void PriorOptions::validate() const
@@ -30,6 +34,8 @@ void PriorOptions::validate() const
 		"'" + source + "' is not one of constant_velocity, external");
 	require(max_translation > 0, s, "max_translation", "must be > 0");
 	require(max_rotation_deg > 0, s, "max_rotation_deg", "must be > 0");
+	require(max_deviation > 0, s, "max_deviation", "must be > 0");
+	require(max_deviation_deg > 0, s, "max_deviation_deg", "must be > 0");
 }
 
 std::vector<std::string> LoamOptions::sections()

@@ -44,7 +44,7 @@ TEST(MotionPrior, ExternalUsedWhenPlausibleElseConstantVelocity)
 	auto p = makeMotionPrior(o);
 	p->update(0.0, Eigen::Isometry3d::Identity());
 	p->update(0.1, step(1.0, 1.0));
-	EXPECT_TRUE(p->predict(0.2, step(1.3, -2.0)).isApprox(step(1.3, -2.0), 1e-9));
+	EXPECT_TRUE(p->predict(0.2, step(1.3, -1.0)).isApprox(step(1.3, -1.0), 1e-9));
 	EXPECT_EQ(p->lastSource(), "external");
 	EXPECT_TRUE(p->predict(0.2, std::nullopt).isApprox(step(1.0, 1.0), 1e-9));
 	EXPECT_EQ(p->lastSource(), "constant_velocity");
@@ -57,6 +57,25 @@ TEST(MotionPrior, ExternalUsedWhenPlausibleElseConstantVelocity)
 	{
 		EXPECT_TRUE(p->predict(0.2, bad).isApprox(step(1.0, 1.0), 1e-9));
 		EXPECT_EQ(p->lastSource(), "constant_velocity");
+	}
+}
+
+TEST(MotionPrior, ExternalFarFromConstantVelocityIsRejected)
+{
+	PriorOptions o;
+	o.source = "external";
+	ExternalPrior p(o);
+	// Before a velocity is known, any plausible external motion is taken.
+	EXPECT_TRUE(p.predict(0.0, step(2.0, 0.0)).isApprox(step(2.0, 0.0), 1e-9));
+	EXPECT_EQ(p.lastSource(), "external");
+	p.update(0.0, Eigen::Isometry3d::Identity());
+	p.update(0.1, step(1.0, 0.0));
+	EXPECT_TRUE(p.predict(0.2, step(1.45, 0.0)).isApprox(step(1.45, 0.0), 1e-9));  // 0.45 m off: kept
+	EXPECT_EQ(p.lastSource(), "external");
+	for (const Eigen::Isometry3d& far : {step(0.4, 0.0), step(1.0, 3.5)})  // 0.6 m, 3.5 deg off
+	{
+		EXPECT_TRUE(p.predict(0.2, far).isApprox(step(1.0, 0.0), 1e-9));
+		EXPECT_EQ(p.lastSource(), "constant_velocity (external rejected)");
 	}
 }
 

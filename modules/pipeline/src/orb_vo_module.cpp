@@ -59,7 +59,17 @@ class OrbVoModule : public VisualOdometryModule
 		step.tracked = info.pose.has_value();
 		if (info.pose) step.pose = toVehicle(*info.pose);
 		if (info.motion) step.motion = toVehicle(*info.motion);
+		step.camera_motion = info.motion;
+		step.camera_map_pose = info.map_pose;
+		step.new_map = info.new_map;
+		step.metric = info.metric;
 		return step;
+	}
+
+	bool rescale(double factor, bool whole_map) override
+	{
+		if (!vo_) return false;
+		return whole_map ? vo_->setMapScale(factor) : vo_->rescaleLocalWindow(factor);
 	}
 
    private:

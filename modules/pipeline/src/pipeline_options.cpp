@@ -18,6 +18,8 @@ void PipelineOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
 	MRPT_LOAD_CONFIG_VAR(map_max_range, double, c, s);
 	MRPT_LOAD_CONFIG_VAR(snapshots, bool, c, s);
 	MRPT_LOAD_CONFIG_VAR(sample_frame_every, int, c, s);
+	MRPT_LOAD_CONFIG_VAR(bootstrapping, bool, c, s);
+	MRPT_LOAD_CONFIG_VAR(scale_snapshot_every, int, c, s);
 }
 
 void PipelineOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -34,6 +36,8 @@ void PipelineOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const s
 	MRPT_SAVE_CONFIG_VAR_COMMENT(map_max_range, "[m] scan points farther from the sensor are left out of map.pcd");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(snapshots, "write snapshots/ at the end of the run");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(sample_frame_every, "projected-scan snapshot every N frames (0 = none)");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(bootstrapping, "vlo: scale-corrected VO motion as LOAM's initial guess (false = A-LOAM)");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(scale_snapshot_every, "vlo: scale-corrector snapshot every N frames (0 = none)");
 }
 
 void PipelineOptions::validate(const std::string& origin) const
@@ -46,5 +50,6 @@ void PipelineOptions::validate(const std::string& origin) const
 	if (map_every < 0) failInput(origin + ": [pipeline] map_every", "must be >= 0");
 	if (map_max_range <= 0) failInput(origin + ": [pipeline] map_max_range", "must be > 0");
 	if (sample_frame_every < 0) failInput(origin + ": [pipeline] sample_frame_every", "must be >= 0");
+	if (scale_snapshot_every < 0) failInput(origin + ": [pipeline] scale_snapshot_every", "must be >= 0");
 }
 }  // namespace vlo

@@ -81,6 +81,11 @@ RunConfig RunConfig::fromString(const std::string& ini, const std::string& origi
 	return cfg;
 }
 
+void RunConfig::setDefault(const std::string& section, const std::string& key, const std::string& value)
+{
+	if (!user_.keyExists(section, key)) user_.write(section, key, value);
+}
+
 void RunConfig::load(mrpt::config::CLoadableOptions& opts, const std::string& section)
 {
 	opts.loadFromConfigFile(user_, section);

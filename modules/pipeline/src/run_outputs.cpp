@@ -2,6 +2,7 @@
 #include <vlo/core/error.h>
 #include <vlo/io/pcd.h>
 #include <vlo/pipeline/run_outputs.h>
+#include <vlo/scale/overlay.h>
 #include <vlo/viz/map3d.h>
 #include <vlo/viz/projected_scan.h>
 #include <vlo/viz/topdown.h>
@@ -51,7 +52,8 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::stri
 	}
 	std::vector<NamedTrajectory> trajs;
 	if (!o.lo.empty()) trajs.push_back({o.mode == "lo" ? "LiDAR odometry" : "VLO", o.lo, std::nullopt});
-	if (!o.vo.empty()) trajs.push_back({"visual odometry", o.vo, std::nullopt});
+	if (!o.vo.empty())
+		trajs.push_back({o.mode == "vlo" ? "scale-corrected VO" : "visual odometry", o.vo, std::nullopt});
 	if (trajs.empty()) return;
 	TopDownStyle td;
 	td.title = "vlo-run (" + o.mode + "), " + std::to_string(o.table.rows()) + " frames";
@@ -71,6 +73,18 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::stri
 		std::snprintf(name, sizeof(name), "/frame_%06zu.png", f.index);
 		renderProjectedScan(f.image, f.scan, f.rig, dir + name, {}, ps);
 	}
+	for (const auto& snap : o.scale_snapshots)
+	{
+		const auto& e = snap.estimate;
+		ProjectedScanStyle ps;
+		char title[160];
+		std::snprintf(title, sizeof(title), "scale C(%zu)->C(%zu): s = %.4f, %d inliers of %d triangulated (%s)",
+			snap.prev.index, snap.cur_index, e.scale, e.counts.inliers, e.counts.triangulated, scale::toString(e.reason));
+		ps.title = title;
+		char name[64];
+		std::snprintf(name, sizeof(name), "/scale_%06zu.png", snap.cur_index);
+		renderProjectedScan(snap.prev.image, snap.prev.scan, snap.prev.rig, dir + name, scale::scaleOverlay(e), ps);
+	}
 }
 }  // namespace
 
@@ -88,7 +102,7 @@ RunSummary RunOutputs::write(
 	s.mode = mode;
 	const Trajectory& finalTraj = mode == "vo" ? vo : lo;
 	s.final_trajectory = "trajectory_" + mode + ".tum";
-	if (!lo.empty()) writeTum(dir + "/trajectory_lo.tum", lo);
+	if (!lo.empty()) writeTum(dir + (mode == "vlo" ? "/trajectory_vlo.tum" : "/trajectory_lo.tum"), lo);
 	if (!vo.empty()) writeTum(dir + "/trajectory_vo.tum", vo);
 	s.path_length_m = pathLength(finalTraj);
 	s.max_step_m = maxStep(finalTraj);
@@ -125,8 +139,9 @@ void writeSummaryJson(const std::string& path, const RunSummary& s, const RunReq
 	  << ",\n  \"ini\": " << jsonString(req.ini) << ",\n  \"frames\": " << s.frames
 	  << ",\n  \"seconds\": " << s.seconds << ",\n  \"ms_per_frame\": " << s.ms_per_frame
 	  << ",\n  \"path_length_m\": " << s.path_length_m << ",\n  \"max_step_m\": " << s.max_step_m
-	  << ",\n  \"trajectory\": " << jsonString(s.final_trajectory) << ",\n  \"reader\": " << jsonString(s.reader_stats)
-	  << "\n}\n";
+	  << ",\n  \"trajectory\": " << jsonString(s.final_trajectory) << ",\n  \"reader\": " << jsonString(s.reader_stats);
+	for (const auto& [key, value] : s.figures) o << ",\n  " << jsonString(key) << ": " << value;
+	o << "\n}\n";
 	f.commit();
 }
 }  // namespace vlo

@@ -55,6 +55,7 @@ void ScaleOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, co
 	MRPT_LOAD_CONFIG_VAR(min_inlier_ratio, double, c, s);
 	MRPT_LOAD_CONFIG_VAR(correction_threshold, double, c, s);
 	MRPT_LOAD_CONFIG_VAR(correction_enabled, bool, c, s);
+	MRPT_LOAD_CONFIG_VAR(correction_window, int, c, s);
 	validate(s);
 }
 
@@ -91,6 +92,7 @@ void ScaleOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std:
 	MRPT_SAVE_CONFIG_VAR_COMMENT(min_inlier_ratio, "smallest inlier fraction of the triangulated points");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(correction_threshold, "correct the VO map when |s - 1| >= this");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(correction_enabled, "false: scale fixed once after initialisation");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(correction_window, "median of the last N valid estimates decides (1 = paper)");
 }
 
 void ScaleOptions::validate(const std::string& s) const
@@ -120,5 +122,6 @@ void ScaleOptions::validate(const std::string& s) const
 	require(min_inliers >= 1, "min_inliers", "must be >= 1");
 	require(min_inlier_ratio >= 0 && min_inlier_ratio <= 1, "min_inlier_ratio", "must be in [0, 1]");
 	require(correction_threshold >= 0, "correction_threshold", "must be >= 0");
+	require(correction_window >= 1, "correction_window", "must be >= 1");
 }
 }  // namespace vlo::scale

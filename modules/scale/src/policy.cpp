@@ -1,6 +1,8 @@
 #include <vlo/scale/policy.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace vlo::scale
 {
@@ -16,7 +18,9 @@ const char* toString(ScaleDecision::Kind k)
 }
 
 ScaleCorrectionPolicy::ScaleCorrectionPolicy(const ScaleOptions& opt)
-	: threshold_(opt.correction_threshold), enabled_(opt.correction_enabled)
+	: threshold_(opt.correction_threshold),
+	  enabled_(opt.correction_enabled),
+	  window_(static_cast<std::size_t>(std::max(1, opt.correction_window)))
 {
 	opt.validate();
 }
@@ -40,16 +44,30 @@ ScaleDecision ScaleCorrectionPolicy::decide(const ScaleEstimate& e)
 		d.why = "correction disabled";
 		return d;
 	}
-	else if (std::abs(e.scale - 1.0) < threshold_)
-	{
-		d.why = "within threshold";
-		return d;
-	}
 	else
 	{
+		recent_.push_back(e.scale);
+		if (recent_.size() > window_) recent_.pop_front();
+		if (recent_.size() < window_)
+		{
+			d.why = "collecting estimates";
+			return d;
+		}
+		std::vector<double> v(recent_.begin(), recent_.end());
+		std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+		const double median = v[v.size() / 2];
+		if (std::abs(median - 1.0) < threshold_)
+		{
+			d.why = "within threshold";
+			return d;
+		}
 		d.kind = ScaleDecision::Kind::Correction;
 		d.why = "|s - 1| >= threshold";
+		d.factor = median;
 		++corrections_;
+		recent_.clear();  // the next estimates measure the corrected map
+		cumulative_ *= median;
+		return d;
 	}
 	d.factor = e.scale;
 	cumulative_ *= e.scale;
@@ -59,6 +77,7 @@ ScaleDecision ScaleCorrectionPolicy::decide(const ScaleEstimate& e)
 void ScaleCorrectionPolicy::reset()
 {
 	initialized_ = false;
+	recent_.clear();
 	cumulative_ = 1.0;
 	corrections_ = 0;
 }

@@ -18,7 +18,9 @@ ScaleEstimate estimate(double s, bool valid = true)
 
 TEST(Policy, InitialThenOnlyBeyondTheThreshold)
 {
-	ScaleCorrectionPolicy p;
+	ScaleOptions opt;
+	opt.correction_window = 1;  // the paper: each estimate alone
+	ScaleCorrectionPolicy p(opt);
 	EXPECT_FALSE(p.decide(estimate(3.1, false)).apply());  // nothing before a valid estimate
 	EXPECT_FALSE(p.hasMetricScale());
 
@@ -56,8 +58,44 @@ TEST(Policy, ThresholdIsAnOption)
 {
 	ScaleOptions opt;
 	opt.correction_threshold = 0.05;
+	opt.correction_window = 1;
 	ScaleCorrectionPolicy p(opt);
 	p.decide(estimate(1));
 	EXPECT_FALSE(p.decide(estimate(1.04)).apply());
 	EXPECT_TRUE(p.decide(estimate(1.06)).apply());
+}
+
+ScaleCorrectionPolicy windowOf5()
+{
+	ScaleOptions opt;
+	opt.correction_window = 5;
+	return ScaleCorrectionPolicy(opt);
+}
+
+TEST(Policy, TheMedianOfTheWindowDecidesAndStartsAfreshAfterACorrection)
+{
+	ScaleCorrectionPolicy p = windowOf5();
+	EXPECT_EQ(p.decide(estimate(7.0)).kind, ScaleDecision::Kind::Initial);
+	// Scattered estimates around 1: single ones beyond 2 % never trigger a correction.
+	for (double s : {1.03, 0.97, 1.01, 0.98, 1.04, 0.99, 1.01}) EXPECT_FALSE(p.decide(estimate(s)).apply()) << s;
+	// A real drift (the VO now 5 % short): once it is the median of the last five, it is corrected.
+	EXPECT_FALSE(p.decide(estimate(1.05)).apply());  // 0.98 0.99 1.01 1.04 1.05: median 1.01
+	const ScaleDecision d = p.decide(estimate(1.05));  // 0.99 1.01 1.04 1.05 1.05: median 1.04
+	EXPECT_EQ(d.kind, ScaleDecision::Kind::Correction);
+	EXPECT_DOUBLE_EQ(d.factor, 1.04);
+}
+
+TEST(Policy, MedianCorrectionValueIgnoresOutliers)
+{
+	ScaleCorrectionPolicy p = windowOf5();
+	p.decide(estimate(1.0));
+	for (double s : {1.05, 0.5, 1.04, 1.07}) EXPECT_FALSE(p.decide(estimate(s)).apply());
+	const ScaleDecision d = p.decide(estimate(1.2));
+	EXPECT_EQ(d.kind, ScaleDecision::Kind::Correction);
+	EXPECT_DOUBLE_EQ(d.factor, 1.05);  // median of 0.5 1.04 1.05 1.07 1.2
+	// After a correction the window starts again: four more estimates are only collected.
+	for (double s : {1.1, 1.1, 1.1, 1.1}) EXPECT_FALSE(p.decide(estimate(s)).apply());
+	EXPECT_TRUE(p.decide(estimate(1.1)).apply());
+	EXPECT_NEAR(p.cumulative(), 1.0 * 1.05 * 1.1, 1e-12);
+	EXPECT_EQ(p.corrections(), 2);
 }

@@ -7,6 +7,7 @@
 #include <vlo/sim/simulator.h>
 
 #include <mrpt/opengl/COpenGLScene.h>
+#include <opencv2/core.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -154,6 +155,7 @@ Frame Simulator::frame(int k, RenderedView* camera_depth)
 	f.rig = rig;
 	Rng imageNoise = Rng::stream(d.cfg.seed, "image noise", static_cast<uint64_t>(k));
 	f.image = d.camera->image(tiles[0], d.cfg.image_noise, imageNoise);
+	if (k >= d.cfg.blackout_first && k < d.cfg.blackout_end) f.image.asCvMatRef().setTo(cv::Scalar::all(128));
 	f.has_image = true;
 	Rng lidarNoise = Rng::stream(d.cfg.seed, "lidar noise", static_cast<uint64_t>(k));
 	const std::vector<RenderedView> lt(std::make_move_iterator(tiles.begin() + 1), std::make_move_iterator(tiles.end()));

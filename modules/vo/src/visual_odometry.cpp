@@ -85,6 +85,7 @@ VoFrameInfo VisualOdometry::Impl::process(const cv::Mat& gray, double t)
 	if (cur.has_pose)
 	{
 		info.pose = traj_T_map * cur.Tcw.inverse();
+		info.map_pose = cur.Tcw.inverse();
 		cur.resolvePoints();
 		if (cur.ref_kf && cur.ref_kf->bad) cur.ref_kf = last_kf;
 		last = std::move(cur);

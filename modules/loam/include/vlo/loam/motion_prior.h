@@ -33,6 +33,8 @@ class ConstantVelocityPrior : public MotionPrior
 	std::string lastSource() const override { return source_; }
 	void update(double t, const Eigen::Isometry3d& T_prev_curr) override;
 	void reset() override;
+	/// A motion between two frames is known (not only a first frame).
+	bool hasVelocity() const { return last_dt_ > 0; }
 
    private:
 	Eigen::Isometry3d last_ = Eigen::Isometry3d::Identity();
@@ -41,7 +43,8 @@ class ConstantVelocityPrior : public MotionPrior
 	std::string source_ = "none";
 };
 
-/// Uses the externally supplied motion when present and plausible, else constant velocity.
+/// Uses the externally supplied motion when present, plausible, and close to the constant-velocity
+/// prediction (when there is one); else constant velocity.
 class ExternalPrior : public MotionPrior
 {
    public:
@@ -53,6 +56,8 @@ class ExternalPrior : public MotionPrior
 
 	/// Finite, a proper rotation, and within the configured translation/rotation bounds.
 	bool plausible(const Eigen::Isometry3d& T) const;
+	/// Within max_deviation / max_deviation_deg of the constant-velocity prediction `cv`.
+	bool agrees(const Eigen::Isometry3d& external, const Eigen::Isometry3d& cv) const;
 
    private:
 	PriorOptions opt_;

@@ -20,6 +20,10 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	double map_max_range = 60;  ///< [m] scan points farther from the sensor are left out of map.pcd
 	bool snapshots = true;  ///< write snapshots/ at the end of the run
 	int sample_frame_every = 0;  ///< also a projected-scan snapshot every N frames (0 = none)
+	/// Mode vlo: the scale-corrected VO motion is LOAM's initial guess (false: constant velocity, the
+	/// A-LOAM baseline inside a vlo run, for the ablation).
+	bool bootstrapping = true;
+	int scale_snapshot_every = 0;  ///< mode vlo: a scale-corrector snapshot every N frames (0 = none)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;

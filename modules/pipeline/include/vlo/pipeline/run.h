@@ -2,6 +2,7 @@
 // One replay of a rawlog through the configured estimators, and everything it leaves in the output
 // folder: trajectories, frames.csv, map.pcd, run.ini, summary.json and snapshots/.
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vlo
@@ -23,6 +24,7 @@ struct RunSummary
 	double max_step_m = 0;  ///< largest frame-to-frame translation of the final trajectory
 	std::string final_trajectory;  ///< file name inside the output folder
 	std::string reader_stats;
+	std::vector<std::pair<std::string, double>> figures;  ///< mode-specific counts for summary.json
 };
 
 /// Throws InputError for bad input (files, options, data); nothing is left half-written.

@@ -21,6 +21,9 @@ class RunConfig
 	static RunConfig fromString(const std::string& ini, const std::string& origin = "<memory>",
 		const std::vector<std::string>& overrides = {});
 
+	/// Gives `section.key` the value `value` unless the file or an override sets it: a default that
+	/// depends on another option (e.g. the LOAM prior source in mode vlo).
+	void setDefault(const std::string& section, const std::string& key, const std::string& value);
 	/// Loads `opts` from `section` (defaults where absent) and validates the types of given values.
 	void load(mrpt::config::CLoadableOptions& opts, const std::string& section);
 	/// Throws InputError naming the first section or key that no load() consumed.

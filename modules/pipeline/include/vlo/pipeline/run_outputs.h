@@ -5,6 +5,7 @@
 #include <vlo/pipeline/frame_table.h>
 #include <vlo/pipeline/pipeline_options.h>
 #include <vlo/pipeline/run.h>
+#include <vlo/pipeline/scale_stage.h>
 
 #include <string>
 #include <vector>
@@ -15,10 +16,11 @@ struct RunOutputs
 {
 	std::string mode;
 	FrameTable table;
-	Trajectory lo;  ///< LiDAR odometry, vehicle frame
-	Trajectory vo;  ///< visual odometry (tracked frames only), vehicle frame
+	Trajectory lo;  ///< LiDAR odometry (mode lo) or the final VLO trajectory (mode vlo), vehicle frame
+	Trajectory vo;  ///< visual odometry (tracked frames only; metric in mode vlo), vehicle frame
 	PointCloud map;  ///< vehicle frame of the first frame (already thinned)
 	std::vector<Frame> sample_frames;  ///< for projected-scan snapshots
+	std::vector<ScaleSnapshot> scale_snapshots;  ///< mode vlo: frames with a scale estimate to draw
 
 	void addSampleFrame(const Frame& f);
 	/// Writes trajectories, frames.csv, map.pcd, run.ini and snapshots/; returns the summary figures.

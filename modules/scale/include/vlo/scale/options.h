@@ -61,6 +61,10 @@ struct ScaleOptions : public mrpt::config::CLoadableOptions
 	// ScaleCorrectionPolicy.
 	double correction_threshold = 0.02;  ///< apply when |s - 1| >= this (the paper's 2 %)
 	bool correction_enabled = true;  ///< false: only the first estimate (initial metric scale) is applied
+	/// Median of the last N valid estimates decides a correction (1 = each estimate alone, the paper).
+	/// Single estimates scatter by 2-4 %, as much as the 2 % threshold: rescaling the VO on each of
+	/// them (or on a median of 5) disturbs it more than it corrects (doc/SCALE.md).
+	int correction_window = 15;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;

@@ -1,9 +1,13 @@
 #pragma once
 // When to apply a scale estimate to the VO map (paper III-C): the first valid estimate after the VO's
 // initialisation sets the metric scale; afterwards a correction only when |s - 1| >= 2 % (option),
-// because every correction disturbs the local mapping. No smoothing: the paper applies s as is.
+// because every correction disturbs the local mapping. The paper applies each estimate as is
+// (correction_window = 1); by default the median of the last 5 decides, which also ignores the odd
+// outlier (see ScaleOptions).
 #include <vlo/scale/diagnostics.h>
 #include <vlo/scale/options.h>
+
+#include <deque>
 
 namespace vlo::scale
 {
@@ -42,6 +46,8 @@ class ScaleCorrectionPolicy
    private:
 	double threshold_;
 	bool enabled_;
+	std::size_t window_;
+	std::deque<double> recent_;  ///< valid estimates since the last applied factor
 	bool initialized_ = false;
 	double cumulative_ = 1.0;
 	int corrections_ = 0;

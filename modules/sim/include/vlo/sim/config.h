@@ -49,6 +49,9 @@ struct SimConfig
 	double range_noise = 0.02;  ///< m, 1 sigma
 	double image_noise = 2.0;  ///< gray levels, 1 sigma
 	double dropout = 0.005;  ///< probability that a return is lost
+	/// Frames [blackout_first, blackout_end) get a uniform grey image: a blinded camera (glare, a tunnel
+	/// exit), to exercise the VO's LOST state and the LiDAR-only fallback.
+	int blackout_first = -1, blackout_end = -1;
 	/// KITTI camera-0 poses to drive along instead of a generated drive ("" = generate).
 	std::string kitti_poses;
 };

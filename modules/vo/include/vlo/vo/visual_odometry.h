@@ -37,6 +37,8 @@ struct VoFrameInfo
 	std::optional<SE3> pose;
 	/// Pose of this camera in the previous frame's camera (map units), when both are tracked in one map.
 	std::optional<SE3> motion;
+	/// Camera pose in the current map's frame (its first keyframe), map units: what setMapScale() scales.
+	std::optional<SE3> map_pose;
 	int features = 0, matches = 0, map_points = 0, keyframes = 0;
 	int reinits = 0;  ///< maps started after the first one
 	int map_id = -1;  ///< counts maps from 0
@@ -95,6 +97,7 @@ class VisualOdometry
 	LocalMapView localMap() const;
 	/// Scales the local window (keyframes of the last local BA, optimised and fixed, and their points)
 	/// by s about its earliest optimised keyframe, and the current pose and motion model with it; the
+	/// same similarity moves the rest of the map so that every observation stays consistent. The
 	/// output trajectory stays continuous (later motions are s times longer). False without a map.
 	bool rescaleLocalWindow(double s);
 	/// Scales the whole current map about its origin (first keyframe), with the current pose and

@@ -1,0 +1,55 @@
+#include <vlo/batch/jobs.h>
+#include <vlo/batch/snapshots.h>
+#include <vlo/viz/topdown.h>
+
+#include <filesystem>
+#include <iostream>
+
+namespace vlo::batch
+{
+namespace
+{
+bool drawSequence(const Sequence& s, const std::vector<RunResult>& results, const std::string& png)
+{
+	std::vector<NamedTrajectory> trajs;
+	for (const auto& r : results)
+	{
+		if (r.sequence != s.name) continue;
+		for (const auto& t : r.trajectories)
+		{
+			// An unscaled monocular estimate means nothing next to metric ones before its Sim(3) alignment.
+			const bool useAligned = !t.aligned.empty();
+			const std::string file = useAligned ? t.aligned : r.dir + "/" + files::trajectory(t.name);
+			trajs.push_back({r.config + " / " + t.name + (useAligned ? " (Sim(3) aligned)" : ""), readTum(file), std::nullopt});
+		}
+	}
+	if (trajs.empty()) return false;
+	Trajectory gt;
+	if (std::filesystem::is_regular_file(s.gt)) gt = readTum(s.gt);
+	TopDownStyle style;
+	style.title = s.name + ": " + std::to_string(trajs.size()) + " trajectories";
+	renderTopDown(trajs, gt.empty() ? nullptr : &gt, png, style);
+	return true;
+}
+}  // namespace
+
+std::vector<std::string> writeSnapshots(const Plan& plan, const std::vector<RunResult>& results, const std::string& out)
+{
+	std::vector<std::string> written;
+	std::filesystem::create_directories(out + "/snapshots");
+	for (const auto& s : plan.sequences)
+	{
+		const std::string rel = "snapshots/" + s.name + ".png";
+		try
+		{
+			if (drawSequence(s, results, out + "/" + rel)) written.push_back(rel);
+		}
+		catch (const std::exception& e)
+		{
+			std::string msg = e.what();
+			std::cerr << "vlo-batch: warning: " << rel << " not written: " << msg.substr(0, msg.find('\n')) << std::endl;
+		}
+	}
+	return written;
+}
+}  // namespace vlo::batch

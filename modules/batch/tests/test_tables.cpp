@@ -1,0 +1,166 @@
+#include "batch_test_utils.h"
+
+#include <gtest/gtest.h>
+#include <vlo/batch/jobs.h>
+#include <vlo/batch/json_fields.h>
+#include <vlo/batch/results.h>
+#include <vlo/batch/snapshots.h>
+#include <vlo/batch/tables.h>
+#include <vlo/core/error.h>
+
+#include <cmath>
+
+using namespace vlo;
+using namespace vlo::batch;
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string evalJson(const std::string& ate, const std::string& are, const std::string& t, const std::string& r)
+{
+	// The layout of vlo-eval --json (modules/eval/src/report.cpp), nested array included.
+	return "{\n  \"gt\": \"a \\\"b\\\".tum\",\n  \"n_matched\": 25,\n  \"gt_length_m\": 31.5,\n  \"ate_rmse_m\": " + ate +
+		",\n  \"are_rmse_deg\": " + are + ",\n  \"sim3_scale\": 0.98,\n  \"ate_note\": null,\n  \"kitti_t_err_pct\": " + t +
+		",\n  \"kitti_r_err_deg_per_m\": " + r + ",\n  \"kitti_segments\": 12,\n  \"kitti_per_length\": [\n    {\"length_m\": 10, "
+		"\"segments\": 6, \"t_err_pct\": 1.5}\n  ],\n  \"kitti_note\": null\n}\n";
+}
+
+const std::string kTum = "0 0 0 0 0 0 0 1\n0.1 1 0 0 0 0 0 1\n0.2 2 0.1 0 0 0 0 1\n";
+
+/// Two sequences (the second with translation-only ground truth) x four configurations, as runs
+/// leave them: ok, a failed evaluation, a failed vlo-run, and never run.
+struct BatchTables : public ::testing::Test
+{
+	test::ScratchDir dir{"tables"};
+	std::string out = dir / "out";
+	Plan plan;
+	void SetUp() override
+	{
+		plan.source = "ini/experiments/t.ini";
+		plan.data_dir = dir / "data";
+		plan.kitti_lengths = "10,20";
+		for (const char* s : {"s1", "s2"})
+		{
+			Sequence q;
+			q.name = s;
+			q.gt = dir / (std::string("data/") + s + ".gt.tum");
+			q.gt_translation_only = q.name == "s2";
+			test::writeFile(q.gt, kTum);
+			plan.sequences.push_back(q);
+		}
+		plan.configs = {{"lo", {"pipeline.mode=lo"}, "se3", ""}, {"vo_mono", {"pipeline.mode=vo"}, "sim3", ""},
+			{"broken", {"x.y=1"}, "se3", ""}, {"later", {}, "se3", ""}};
+		const auto run = [&](const std::string& s, const std::string& c) { return runDir(out, s, c) + "/"; };
+		for (const auto& [s, ms] : {std::pair<std::string, double>{"s1", 20.0}, {"s2", 30.0}})
+		{
+			test::writeFile(run(s, "lo") + "exit_code", "0\n");
+			test::writeFile(run(s, "lo") + "summary.json",
+				"{\"mode\": \"lo\", \"frames\": 25, \"ms_per_frame\": " + std::to_string(ms) + "}\n");
+			test::writeFile(run(s, "lo") + "trajectory_lo.tum", kTum);
+			test::writeFile(run(s, "broken") + "exit_code", "2\n");
+			test::writeFile(run(s, "broken") + "vlo-run.err", "a warning\nvlo-run: error: x.ini: unknown key 'y' | in [x]\n");
+		}
+		test::writeFile(run("s1", "lo") + "eval_lo.json", evalJson("0.5", "0.3", "1.25", "0.0042"));
+		test::writeFile(run("s2", "lo") + "eval_lo.json", evalJson("0.456", "null", "null", "null"));
+		test::writeFile(run("s1", "vo_mono") + "exit_code", "0\n");
+		test::writeFile(run("s1", "vo_mono") + "summary.json", "{\"ms_per_frame\": 50}\n");
+		test::writeFile(run("s1", "vo_mono") + "trajectory_vo.tum", kTum);
+		test::writeFile(run("s1", "vo_mono") + "aligned_vo.tum", kTum);
+		test::writeFile(run("s1", "vo_mono") + "eval_vo.json", evalJson("0.789", "1.23", "40", "0.1"));
+		test::writeFile(run("s2", "vo_mono") + "exit_code", "1\n");
+		test::writeFile(run("s2", "vo_mono") + "summary.json", "{\"ms_per_frame\": 60}\n");
+		test::writeFile(run("s2", "vo_mono") + "trajectory_vo.tum", kTum);
+		test::writeFile(run("s2", "vo_mono") + "eval_vo.err", "vlo-eval: error: too few poses\n");
+	}
+	bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+};
+}  // namespace
+
+TEST_F(BatchTables, CollectsStatusErrorsAndNumbers)
+{
+	const auto rs = collectResults(plan, out);
+	ASSERT_EQ(rs.size(), 8u);
+	EXPECT_EQ(rs[0].status, RunStatus::Ok);
+	EXPECT_DOUBLE_EQ(rs[0].ms_per_frame, 20.0);
+	EXPECT_DOUBLE_EQ(rs[0].frames, 25.0);
+	ASSERT_EQ(rs[0].trajectories.size(), 1u);
+	EXPECT_DOUBLE_EQ(rs[0].trajectories[0].eval.number("kitti_t_err_pct"), 1.25);
+	EXPECT_EQ(rs[1].trajectories[0].aligned, runDir(out, "s1", "vo_mono") + "/aligned_vo.tum");
+	EXPECT_EQ(rs[2].status, RunStatus::Failed);
+	EXPECT_EQ(rs[2].error, "vlo-run: error: x.ini: unknown key 'y' | in [x]");  // the error line, not the warning
+	EXPECT_EQ(rs[3].status, RunStatus::Missing);
+	EXPECT_EQ(rs[3].error, "not run");
+	EXPECT_EQ(rs[5].status, RunStatus::Failed);
+	EXPECT_EQ(rs[5].trajectories[0].error, "vlo-eval: error: too few poses");
+	EXPECT_EQ(rs[5].error, "trajectory_vo.tum: vlo-eval: error: too few poses");
+	// A damaged JSON file fails its own row, not the collection.
+	test::writeFile(runDir(out, "s1", "lo") + "/eval_lo.json", "{\"ate_rmse_m\": ");
+	const auto damaged = collectRun(runDir(out, "s1", "lo"), plan.sequences[0], plan.configs[0]);
+	ASSERT_EQ(damaged.trajectories.size(), 1u);
+	const std::string& why = damaged.trajectories[0].error;
+	EXPECT_NE(why.find("eval_lo.json: not valid JSON"), std::string::npos) << why;
+	fs::create_directories(runDir(out, "s9", "x"));
+	EXPECT_EQ(collectRun(runDir(out, "s9", "x"), plan.sequences[0], plan.configs[0]).error, "did not finish (no exit_code)");
+}
+
+TEST_F(BatchTables, MarkdownHasThePaperTables)
+{
+	const auto md = markdownResults(plan, collectResults(plan, out), {"snapshots/s1.png"});
+	EXPECT_TRUE(has(md, "Sequences: 2, configurations: 4, runs: 8 (3 done, 3 failed, 2 not run).")) << md;
+	EXPECT_TRUE(has(md, "| configuration / trajectory | align | s1 | s2 | mean |\n|---|---|---:|---:|---:|\n")) << md;
+	EXPECT_TRUE(has(md, "| vo_mono / vo | sim3 | 0.789 / 1.23 | failed | – |\n")) << md;
+	EXPECT_TRUE(has(md, "segments of 10,20 m")) << md;
+	EXPECT_TRUE(has(md, "| lo / lo | 1.25 / 0.0042 | ATE 0.456 m | – |\n")) << md;
+	EXPECT_TRUE(has(md, "| broken | failed | failed | – |\n")) << md;
+	EXPECT_TRUE(has(md, "| later | not run | not run | – |\n")) << md;
+	EXPECT_TRUE(has(md, "| lo | 20.0 | 30.0 | 25.0 |\n")) << md;  // timing, with the mean
+	EXPECT_TRUE(has(md, "| vo_mono | 50.0 | 60.0 | 55.0 |\n")) << md;
+	EXPECT_TRUE(has(md, "| s1 / broken | vlo-run: error: x.ini: unknown key 'y' \\| in [x] |\n")) << md;
+	EXPECT_TRUE(has(md, "| s2 / vo_mono (vo) | vlo-eval: error: too few poses |\n")) << md;
+	EXPECT_TRUE(has(md, "![snapshots/s1.png](snapshots/s1.png)")) << md;
+	EXPECT_FALSE(has(md, "vo_mono / lo"));
+}
+
+TEST_F(BatchTables, MeanOverSequencesWhenAllHaveNumbers)
+{
+	test::writeFile(runDir(out, "s2", "lo") + "/eval_lo.json", evalJson("0.2", "0.1", "0.75", "0.0022"));
+	const auto md = markdownResults(plan, collectResults(plan, out), {});
+	EXPECT_TRUE(has(md, "| lo / lo | 1.25 / 0.0042 | 0.75 / 0.0022 | 1.00 / 0.0032 |\n")) << md;
+}
+
+TEST_F(BatchTables, CsvHasEveryNumber)
+{
+	const auto csv = csvResults(collectResults(plan, out));
+	EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 9);
+	EXPECT_EQ(csv.substr(0, csv.find('\n')),
+		"sequence,config,trajectory,status,align,ate_rmse_m,are_rmse_deg,sim3_scale,kitti_t_err_pct,kitti_r_err_deg_per_m,"
+		"kitti_segments,n_matched,gt_length_m,frames,ms_per_frame,error");
+	EXPECT_TRUE(has(csv, "\ns1,lo,lo,ok,se3,0.5,0.3,0.98,1.25,0.0042,12,25,31.5,25,20,\n")) << csv;
+	EXPECT_TRUE(has(csv, "\ns2,lo,lo,ok,se3,0.456,,0.98,,,12,25,31.5,25,30,\n")) << csv;
+	EXPECT_TRUE(has(csv, "\ns1,broken,,failed,se3,,,,,,,,,,,vlo-run: error: x.ini: unknown key 'y' | in [x]\n")) << csv;
+	EXPECT_TRUE(has(csv, "\ns2,vo_mono,vo,failed,sim3,,,,,,,,,,60,vlo-eval: error: too few poses\n")) << csv;
+	EXPECT_TRUE(has(csv, "\ns1,later,,not run,se3,,,,,,,,,,,not run\n")) << csv;
+}
+
+TEST_F(BatchTables, SnapshotPerSequenceWithTrajectories)
+{
+	const auto pngs = writeSnapshots(plan, collectResults(plan, out), out);
+	const std::vector<std::string> expected{"snapshots/s1.png", "snapshots/s2.png"};
+	EXPECT_EQ(pngs, expected);
+	for (const auto& p : pngs) EXPECT_GT(fs::file_size(out + "/" + p), 1000u);
+}
+
+TEST(BatchJson, ScalarsStringsAndNulls)
+{
+	const auto j = JsonFields::parse("{\"a\": 1.5e2, \"b\": null, \"s\": \"x \\\"y\\\"\\n\", \"arr\": [1, {\"c\": \"]\"}], \"o\": {}, "
+									 "\"t\": true}", "j");
+	EXPECT_DOUBLE_EQ(j.number("a"), 150.0);
+	EXPECT_TRUE(std::isnan(j.number("b")));
+	EXPECT_TRUE(std::isnan(j.number("missing")));
+	EXPECT_EQ(j.text("s"), "x \"y\"\n");
+	EXPECT_FALSE(j.has("arr"));
+	EXPECT_EQ(j.text("t"), "true");
+	EXPECT_THROW(JsonFields::parse("[1]", "j"), InputError);
+	EXPECT_THROW(JsonFields::parse("{\"a\": 1", "j"), InputError);
+	EXPECT_THROW(JsonFields::read("/no/such.json"), InputError);
+}

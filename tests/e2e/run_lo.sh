@@ -3,13 +3,8 @@
 # must be tracked within error bounds and leave every output; bad input must fail cleanly.
 set -u
 BIN="${VLO_BIN:?}"
-W="${VLO_WORK:?}"
 INI="${VLO_SRC:?}/ini"
-rm -rf "$W" && mkdir -p "$W" && cd "$W" || exit 1
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
-jv() { grep -o "\"$2\": [^,]*" "$1" | head -1 | cut -d' ' -f2-; }
-below() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && a != "null" && a + 0 < b + 0) }'; }
+. "$VLO_SRC/tests/e2e/lib/common.sh"
 
 # run_case NAME LIDAR INI FRAMES MAX_T_ERR_PCT MAX_ATE_M
 run_case() {
@@ -58,5 +53,4 @@ expect_bad "bad --set" "section.key=value" --rawlog hdl64.rawlog --ini "$INI/sim
 head -c 3000000 hdl64.rawlog > truncated.rawlog && cp -r hdl64_Images truncated_Images
 expect_bad "truncated rawlog" "truncated" --rawlog truncated.rawlog --ini "$INI/sim-hdl64.ini"
 
-[ $fails -eq 0 ] && echo "run_lo: all passed" || echo "run_lo: $fails failure(s)"
-exit $((fails > 0))
+finish run_lo

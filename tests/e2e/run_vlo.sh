@@ -5,15 +5,8 @@
 # is lost (constant velocity then), and bootstrapping off must give the constant-velocity baseline.
 set -u
 BIN="${VLO_BIN:?}"
-W="${VLO_WORK:?}"
 INI="${VLO_SRC:?}/ini"
-rm -rf "$W" && mkdir -p "$W" && cd "$W" || exit 1
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
-jv() { grep -o "\"$2\": [^,]*" "$1" | head -1 | cut -d' ' -f2-; }
-below() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && a != "null" && a + 0 < b + 0) }'; }
-# column CSV NAME: the values of one frames.csv column, one per line
-column() { awk -F, -v n="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == n) c = i; next } { print $c }' "$1"; }
+. "$VLO_SRC/tests/e2e/lib/common.sh"
 
 FRAMES=60
 "$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames $FRAMES --seed 5 --blackout 30:36 --out drive.rawlog --quiet ||
@@ -62,5 +55,4 @@ below 35 "$ext" || fail "fewer than 35 frames bootstrapped by the VO"
 [ "$(column noboot/frames.csv lo_prior | grep -c external)" -eq 0 ] || fail "bootstrapping off still used the VO"
 [ -s noboot/trajectory_vo.tum ] || fail "bootstrapping off: no scale-corrected VO"
 
-[ $fails -eq 0 ] && echo "run_vlo: all passed" || echo "run_vlo: $fails failure(s)"
-exit $((fails > 0))
+finish run_vlo

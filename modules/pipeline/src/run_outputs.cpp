@@ -78,8 +78,8 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::stri
 		const auto& e = snap.estimate;
 		ProjectedScanStyle ps;
 		char title[160];
-		std::snprintf(title, sizeof(title), "scale C(%zu)->C(%zu): s = %.4f, %d inliers of %d triangulated (%s)",
-			snap.prev.index, snap.cur_index, e.scale, e.counts.inliers, e.counts.triangulated, scale::toString(e.reason));
+		std::snprintf(title, sizeof(title), "C(%zu)->C(%zu): s %.3f, %d of %d inliers (%s)", snap.prev.index,
+			snap.cur_index, e.scale, e.counts.inliers, e.counts.triangulated, scale::toString(e.reason));
 		ps.title = title;
 		char name[64];
 		std::snprintf(name, sizeof(name), "/scale_%06zu.png", snap.cur_index);

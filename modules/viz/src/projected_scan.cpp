@@ -38,7 +38,8 @@ double autoMaxDepth(std::vector<double> depths)
 
 /// White strip below the image: depth colour bar on the left; on the right the counts (first row)
 /// and the overlay legend (second row).
-void panel(cv::Mat& out, int top, double maxDepth, const ImageOverlay& overlay, const std::string& info)
+void panel(cv::Mat& out, int top, double maxDepth, const ImageOverlay& overlay, const std::string& title,
+	const std::string& detail)
 {
 	const cv::Rect bar(16, top + 12, std::min(320, out.cols / 3), 14);
 	int left = bar.x;
@@ -48,8 +49,13 @@ void panel(cv::Mat& out, int top, double maxDepth, const ImageOverlay& overlay, 
 		canvas::colorBar(out, bar, 0, maxDepth, label, turbo);
 		left = bar.x + bar.width + 12 + canvas::textSize(label, canvas::kMedium).width + 30;
 	}
-	canvas::text(out, info, {out.cols - 16, top + 19}, canvas::kMedium, canvas::kInk, canvas::HAlign::Right,
-		canvas::VAlign::Middle);
+	// Title and detail beside the colour bar; a long title first drops the detail, then shrinks.
+	const int room = out.cols - 16 - left;
+	const auto fits = [&](const std::string& s, double size) { return canvas::textSize(s, size).width <= room; };
+	const std::string both = title.empty() ? detail : detail.empty() ? title : title + "   " + detail;
+	const std::string info = fits(both, canvas::kMedium) || title.empty() ? both : title;
+	const double size = fits(info, canvas::kMedium) ? canvas::kMedium : canvas::kSmall;
+	canvas::text(out, info, {out.cols - 16, top + 19}, size, canvas::kInk, canvas::HAlign::Right, canvas::VAlign::Middle);
 	std::vector<int> widths;
 	int total = 0;
 	for (const auto& item : overlay.legend)
@@ -118,10 +124,9 @@ cv::Mat drawProjectedScan(const mrpt::img::CImage& image, const PointCloud& scan
 		cv::circle(top, canvas::round(p.px), p.radius, canvas::bgr(p.color), p.filled ? cv::FILLED : p.thickness,
 			cv::LINE_AA);
 
-	std::string info = style.show_scan ? std::to_string(pts.size()) + " of " + std::to_string(scan.size()) +
+	const std::string detail = style.show_scan ? std::to_string(pts.size()) + " of " + std::to_string(scan.size()) +
 			" LiDAR points in view" : "";
-	if (!style.title.empty()) info = style.title + (info.empty() ? "" : "   " + info);
-	panel(out, img.rows, maxDepth, overlay, info);
+	panel(out, img.rows, maxDepth, overlay, style.title, detail);
 	return out;
 }
 

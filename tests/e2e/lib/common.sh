@@ -1,0 +1,16 @@
+# Helpers of the end-to-end scripts: `. "$VLO_SRC/tests/e2e/lib/common.sh"` after `set -u`.
+# Starts in a fresh $VLO_WORK; fail() counts, finish NAME reports and sets the exit code.
+W="${VLO_WORK:?}"
+rm -rf "$W" && mkdir -p "$W" && cd "$W" || exit 1
+fails=0
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+# jv FILE KEY: a value of a JSON file written by vlo-eval or vlo-run (one key per line)
+jv() { grep -o "\"$2\": [^,]*" "$1" | head -1 | cut -d' ' -f2-; }
+# below A B: A is a number and A < B
+below() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && a != "null" && a + 0 < b + 0) }'; }
+# column CSV NAME: the values of one frames.csv column, one per line
+column() { awk -F, -v n="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == n) c = i; next } { print $c }' "$1"; }
+finish() {
+	[ $fails -eq 0 ] && echo "$1: all passed" || echo "$1: $fails failure(s)"
+	exit $((fails > 0))
+}

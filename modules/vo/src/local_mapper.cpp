@@ -1,7 +1,7 @@
+#include <vlo/core/stopwatch.h>
 #include <vlo/vo/local_mapper.h>
 
 #include <algorithm>
-#include <chrono>
 
 namespace vlo::vo
 {
@@ -13,29 +13,23 @@ LocalMapper::LocalMapper(Map& map, const PinholeCamera& cam, const ScalePyramid&
 
 MappingStats LocalMapper::process(KeyFrame* kf)
 {
-	using Clock = std::chrono::steady_clock;
-	auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
 	MappingStats st;
-	const auto t0 = Clock::now();
+	auto t = SteadyClock::now();
 	attach(kf);
 	st.culled_points = cullRecentPoints(kf);
-	const auto t1 = Clock::now();
+	st.ms_other = lapMs(t);
 	st.new_points = createPoints(kf);
-	const auto t2 = Clock::now();
+	st.ms_triangulate = lapMs(t);
 	st.fused = fuseNeighbours(kf);
-	const auto t3 = Clock::now();
+	st.ms_fuse = lapMs(t);
 	window_ = localWindow(kf, opt_.max_ba_keyframes);
 	if (opt_.local_ba)
 		st.ba = bundleAdjust(window_, cam_, pyr_, opt_.ba_iterations, opt_.ba_refine_iterations, topt_.chi2,
 			nullptr);
-	const auto t4 = Clock::now();
+	st.ms_ba = lapMs(t);
 	st.culled_keyframes = cullKeyFrames(kf);
 	scrub();
-	const auto t5 = Clock::now();
-	st.ms_triangulate = ms(t1, t2);
-	st.ms_fuse = ms(t2, t3);
-	st.ms_ba = ms(t3, t4);
-	st.ms_other = ms(t0, t1) + ms(t4, t5);
+	st.ms_other += lapMs(t);
 	stats_ = st;
 	return st;
 }

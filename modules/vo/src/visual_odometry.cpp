@@ -1,20 +1,11 @@
 #include <vlo/core/error.h>
 #include <vlo/core/se3.h>
-
-#include <chrono>
+#include <vlo/core/stopwatch.h>
 
 #include "vo_impl.h"
 
 namespace vlo::vo
 {
-namespace
-{
-double msSince(std::chrono::steady_clock::time_point t0)
-{
-	return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-}  // namespace
-
 const char* toString(VoState s)
 {
 	switch (s)
@@ -52,13 +43,13 @@ VoFrameInfo VisualOdometry::Impl::process(const cv::Mat& gray, double t)
 	info = VoFrameInfo();
 	info.index = frames++;
 	info.t = t;
-	auto t0 = std::chrono::steady_clock::now();
+	auto t0 = SteadyClock::now();
 	current_feat = std::make_shared<Features>(extractor.extract(gray));
 	info.ms_extract = msSince(t0);
 	info.features = static_cast<int>(current_feat->size());
 	TrackedFrame cur(info.index, t, current_feat);
 
-	t0 = std::chrono::steady_clock::now();
+	t0 = SteadyClock::now();
 	if (state == VoState::Ok)
 	{
 		if (track(cur, info))
@@ -138,7 +129,7 @@ bool VisualOdometry::Impl::track(TrackedFrame& cur, VoFrameInfo& inf)
 
 void VisualOdometry::Impl::insertKeyFrame(TrackedFrame& cur, VoFrameInfo& inf)
 {
-	const auto t0 = std::chrono::steady_clock::now();
+	const auto t0 = SteadyClock::now();
 	KeyFrame* kf = map->addKeyFrame(cur.index, cur.t, cur.feat, cur.Tcw);
 	for (std::size_t i = 0; i < cur.size(); ++i)
 		if (cur.points[i] && !cur.points[i]->bad) kf->points[i] = cur.points[i];

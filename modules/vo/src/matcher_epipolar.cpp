@@ -1,5 +1,8 @@
 // Matching between two keyframes along epipolar segments, for the triangulation of new points.
 #include <vlo/vo/matcher.h>
+#include <vlo/vo/segment_grid.h>
+
+#include <cmath>
 
 
 namespace vlo::vo
@@ -19,6 +22,8 @@ std::vector<std::pair<int, int>> searchForTriangulation(
 		int idx;
 	};
 	std::vector<Cand> free2;
+	SegmentGrid grid(ctx.cam.width, ctx.cam.height, 16.0);
+	double max_tol2 = 0;
 	for (std::size_t j = 0; j < k2.points.size(); ++j)
 	{
 		if (k2.points[j]) continue;
@@ -26,8 +31,11 @@ std::vector<std::pair<int, int>> searchForTriangulation(
 		const double sc = ctx.pyr.scale[static_cast<std::size_t>(kp.octave)];
 		// Near the epipole depth is unobservable (ORB-SLAM's 10 px x scale guard).
 		if ((Vec2(kp.pt.x, kp.pt.y) - epipole).squaredNorm() < 100 * sc) continue;
+		grid.add(kp.pt.x, kp.pt.y, static_cast<int>(free2.size()));
 		free2.push_back({kp.pt.x, kp.pt.y, epipolar_chi2 * sc * sc, static_cast<int>(j)});
+		max_tol2 = std::max(max_tol2, free2.back().tol2);
 	}
+	const double band = std::sqrt(max_tol2);
 
 	const std::size_t n2 = k2.points.size();
 	std::vector<int> best_from(n2, -1), best_dist(n2, 256);
@@ -50,19 +58,29 @@ std::vector<std::pair<int, int>> searchForTriangulation(
 		const Vec2 b = dir2.z() > 0 ? project(ctx.cam, dir2) : Vec2(epipole);
 		const Vec2 ab = b - a;
 		const double ab2 = ab.squaredNorm();
-		const uint8_t* d1 = k1.feat->descriptor(i);
 		int best = 256, best_idx = -1;
-		for (const Cand& c : free2)
-		{
+		const uint8_t* d1 = k1.feat->descriptor(i);
+		const auto consider = [&](int n) {
+			const Cand& c = free2[static_cast<std::size_t>(n)];
 			const double e = l.x() * c.x + l.y() * c.y + l.z();
-			if (e * e > c.tol2 * ln2) continue;
+			if (e * e > c.tol2 * ln2) return;
 			if (ab2 > 1.0)
 			{
 				const double u = ((c.x - a.x()) * ab.x() + (c.y - a.y()) * ab.y()) / ab2;
-				if (u < -0.05 || u > 1.05) continue;
+				if (u < -0.05 || u > 1.05) return;
 			}
 			const int d = hamming(d1, k2.feat->descriptor(static_cast<std::size_t>(c.idx)));
-			if (d <= ctx.opt.descriptor_low && d < best) best = d, best_idx = c.idx;
+			// Ties go to the lower index: the result does not depend on the grid's visiting order.
+			if (d <= ctx.opt.descriptor_low && (d < best || (d == best && c.idx < best_idx))) best = d, best_idx = c.idx;
+		};
+		// The tests above are exact; the grid only skips keypoints far from the segment (from the whole
+		// line when the segment is degenerate).
+		if (ab2 > 1.0) grid.forEachNear(a - 0.05 * ab, a + 1.05 * ab, band, consider);
+		else
+		{
+			const Vec2 foot = -l.z() * Vec2(l.x(), l.y()) / ln2, along = Vec2(-l.y(), l.x()) / std::sqrt(ln2);
+			const double reach = foot.norm() + ctx.cam.width + ctx.cam.height;
+			grid.forEachNear(foot - reach * along, foot + reach * along, band, consider);
 		}
 		if (best_idx < 0) continue;
 		const auto j = static_cast<std::size_t>(best_idx);

@@ -16,7 +16,7 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	double max_time_diff = 0.05;  ///< [s] between a paired image and scan
 	int max_frames = 0;  ///< stop after this many frames; 0 = all
 	double map_voxel = 0.2;  ///< [m] voxel size of map.pcd
-	int map_every = 2;  ///< add every N-th scan to map.pcd (0 = no map.pcd)
+	int map_every = 5;  ///< add every N-th scan to map.pcd (0 = no map.pcd)
 	double map_max_range = 60;  ///< [m] scan points farther from the sensor are left out of map.pcd
 	bool snapshots = true;  ///< write snapshots/ at the end of the run
 	int sample_frame_every = 0;  ///< also a projected-scan snapshot every N frames (0 = none)

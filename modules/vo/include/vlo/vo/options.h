@@ -14,7 +14,9 @@ struct OrbOptions : public mrpt::config::CLoadableOptions
 	/// FAST corners spread by adaptive non-maximal suppression or by ORB-SLAM's quadtree, with
 	/// OpenCV's rBRIEF; or opencv: cv::ORB as it is (the strongest corners, clustered on texture).
 	std::string detector = "anms";  ///< anms | quadtree | opencv
-	int n_features = 2000;  ///< per image, spread over the levels as a geometric series
+	/// Per image, spread over the levels as a geometric series. ORB-SLAM2 takes 2000 on KITTI; 1500 keeps
+	/// the whole system within 10 Hz on one core at about the same VO accuracy (doc/RESULTS.md).
+	int n_features = 1500;
 	double scale_factor = 1.2;  ///< between pyramid levels
 	int n_levels = 8;
 	int fast_threshold = 20;  ///< FAST threshold; cells with no such corner fall back to ...

@@ -1,4 +1,4 @@
-// vlo-eval: scores an estimated trajectory against ground truth (KITTI odometry metric, ATE/ARE).
+// vlo-eval: scores an estimated trajectory against ground truth (KITTI odometry metric, ATE/ARE, RPE).
 #include <vlo/core/app_main.h>
 #include <vlo/core/cli.h>
 #include <vlo/core/error.h>
@@ -34,7 +34,7 @@ int run(int argc, char** argv)
 	CommandLine cl(argc, argv, 1,
 		{{"gt", "GT.tum", "ground truth (TUM, vehicle frame)", true},
 			{"est", "EST.tum", "estimated trajectory (TUM, vehicle frame)", true},
-			{"metric", "kitti|ate|all", "metrics to compute (default all)"},
+			{"metric", "kitti|ate|rpe|all", "metrics to compute (default all)"},
 			{"align", "se3|sim3|none", "alignment before ATE/ARE (default se3; sim3 for unscaled monocular)"},
 			{"json", "OUT.json", "also write the results as JSON"},
 			{"max-dt", "S", "largest ground-truth gap to interpolate across, s (default 3x its median spacing)"},
@@ -48,7 +48,8 @@ int run(int argc, char** argv)
 	{
 		std::cout << cl.usage("vlo-eval --gt GT.tum --est EST.tum [options]\n\n"
 								"Scores an estimated trajectory against ground truth: the KITTI odometry metric and\n"
-								"ATE/ARE after Umeyama alignment. See doc/EVALUATION.md.");
+								"ATE/ARE after Umeyama alignment, and the frame-to-frame relative pose error. See\n"
+								"doc/EVALUATION.md.");
 		return 0;
 	}
 	EvalOptions opts;

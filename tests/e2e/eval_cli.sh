@@ -93,7 +93,7 @@ expect_bad "NaN value" "nan.tum: line 2" --gt curve.tum --est nan.tum
 expect_bad "short line" "short_line.tum: line 2: expected 8 numbers" --gt short_line.tum --est curve.tum
 expect_bad "no overlap" "no pose overlaps the ground truth" --gt curve.tum --est later.tum
 expect_bad "bad alignment" "unknown alignment 'sim2'" --gt curve.tum --est curve.tum --align sim2
-expect_bad "bad metric" "unknown metric" --gt curve.tum --est curve.tum --metric rpe
+expect_bad "bad metric" "unknown metric" --gt curve.tum --est curve.tum --metric speed
 expect_bad "calib without Tr" "calib_no_tr.txt: missing key 'Tr'" --gt curve.tum --est curve.tum --kitti-calib calib_no_tr.txt
 expect_bad "bad rig" "expected 12 numbers" --gt curve.tum --est curve.tum --cam0-T-vehicle "1 0 0"
 expect_bad "missing --est" "missing required option '--est'" --gt curve.tum

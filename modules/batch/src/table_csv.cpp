@@ -31,7 +31,7 @@ const char* statusName(RunStatus s)
 
 /// vlo-eval JSON keys, in column order (doc/EVALUATION.md).
 const char* const kEvalKeys[] = {"ate_rmse_m", "are_rmse_deg", "sim3_scale", "kitti_t_err_pct", "kitti_r_err_deg_per_m",
-	"kitti_segments", "n_matched", "gt_length_m"};
+	"kitti_segments", "rpe_t_rmse_m", "rpe_r_rmse_deg", "n_matched", "gt_length_m"};
 }  // namespace
 
 std::string csvResults(const std::vector<RunResult>& results)

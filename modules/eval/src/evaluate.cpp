@@ -20,10 +20,11 @@ std::string span(const Trajectory& t)
 
 void parseMetric(const std::string& s, EvalOptions& opts)
 {
-	if (s != "all" && s != "ate" && s != "kitti")
-		failInput("--metric", "unknown metric '" + s + "' (expected kitti, ate or all)");
-	opts.ate = s != "kitti";
-	opts.kitti = s != "ate";
+	if (s != "all" && s != "ate" && s != "kitti" && s != "rpe")
+		failInput("--metric", "unknown metric '" + s + "' (expected kitti, ate, rpe or all)");
+	opts.ate = s == "all" || s == "ate";
+	opts.kitti = s == "all" || s == "kitti";
+	opts.rpe = s == "all" || s == "rpe";
 }
 
 EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptions& opts)
@@ -47,11 +48,15 @@ EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptio
 		if (opts.gt_translation_only) r.are_note = "ground truth is translation-only";
 	}
 	else
-		r.ate_note = r.are_note = "not requested (--metric kitti)";
+		r.ate_note = r.are_note = "not requested (--metric)";
+
+	if (!opts.rpe) r.rpe_note = "not requested (--metric)";
+	else if (opts.gt_translation_only) r.rpe_note = "needs full ground-truth poses; the ground truth is translation-only";
+	else r.rpe = computeRpe(a.gt, a.est);
 
 	r.kitti_frame = opts.cam0_T_vehicle ? "camera 0" : "as given";
 	if (!opts.kitti)
-		r.kitti_note = "not requested (--metric ate)";
+		r.kitti_note = "not requested (--metric)";
 	else if (opts.gt_translation_only)
 		r.kitti_note = "needs full ground-truth poses; the ground truth is translation-only";
 	else

@@ -42,7 +42,10 @@ std::string str(const std::string& s)
 
 std::string noteOrNull(const std::string& s) { return s.empty() ? "null" : str(s); }
 
-std::string metricName(const EvalOptions& o) { return o.ate && o.kitti ? "all" : o.ate ? "ate" : "kitti"; }
+std::string metricName(const EvalOptions& o)
+{
+	return o.ate && o.kitti && o.rpe ? "all" : o.ate ? "ate" : o.kitti ? "kitti" : "rpe";
+}
 
 std::string fmt(const char* f, double v)
 {
@@ -101,7 +104,17 @@ std::string toJson(const EvalReport& r)
 			  << ", \"r_err_deg_per_100m\": " << num(100 * kDeg * s.r_err) << "}";
 		}
 	o << (r.kitti && !r.kitti->per_length.empty() ? "\n  ],\n" : "],\n");
-	o << "  \"kitti_note\": " << noteOrNull(r.kitti_note) << "\n}\n";
+	o << "  \"kitti_note\": " << noteOrNull(r.kitti_note) << ",\n";
+	std::optional<double> rt, rr, rx, ry, rz, cvt, cvr;
+	if (r.rpe)
+	{
+		rt = r.rpe->t_rmse_m, rr = r.rpe->r_rmse_deg, cvt = r.rpe->cv_t_rmse_m, cvr = r.rpe->cv_r_rmse_deg;
+		rx = r.rpe->t_rmse_axes_m.x(), ry = r.rpe->t_rmse_axes_m.y(), rz = r.rpe->t_rmse_axes_m.z();
+	}
+	o << "  \"rpe_t_rmse_m\": " << num(rt) << ",\n  \"rpe_r_rmse_deg\": " << num(rr) << ",\n";
+	o << "  \"rpe_t_rmse_axes_m\": [" << num(rx) << ", " << num(ry) << ", " << num(rz) << "],\n";
+	o << "  \"gt_constant_velocity_t_rmse_m\": " << num(cvt) << ",\n  \"gt_constant_velocity_r_rmse_deg\": " << num(cvr) << ",\n";
+	o << "  \"rpe_note\": " << noteOrNull(r.rpe_note) << "\n}\n";
 	return o.str();
 }
 
@@ -151,6 +164,17 @@ std::string formatTable(const EvalReport& r)
 	}
 	else
 		row("KITTI t_err / r_err", "n/a: " + r.kitti_note);
+	if (r.rpe)
+	{
+		const auto& e = *r.rpe;
+		o << "\n";
+		row("RPE per step, RMS", fmt("%.4f m", e.t_rmse_m) + fmt(" / %.4f deg", e.r_rmse_deg) + fmt("  (x %.4f", e.t_rmse_axes_m.x()) +
+				fmt(", y %.4f", e.t_rmse_axes_m.y()) + fmt(", z %.4f m)", e.t_rmse_axes_m.z()));
+		row("GT constant velocity", fmt("%.4f m", e.cv_t_rmse_m) + fmt(" / %.4f deg", e.cv_r_rmse_deg) +
+				" RMS per step (each step predicted by the one before)");
+	}
+	else
+		row("RPE", "n/a: " + r.rpe_note);
 	return o.str();
 }
 }  // namespace vlo

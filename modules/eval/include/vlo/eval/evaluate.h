@@ -4,6 +4,7 @@
 #include <vlo/eval/association.h>
 #include <vlo/eval/ate.h>
 #include <vlo/eval/kitti_metric.h>
+#include <vlo/eval/rpe.h>
 
 #include <Eigen/Geometry>
 #include <optional>
@@ -13,7 +14,7 @@ namespace vlo
 {
 struct EvalOptions
 {
-	bool ate = true, kitti = true;  ///< which metrics to compute
+	bool ate = true, kitti = true, rpe = true;  ///< which metrics to compute
 	Alignment align = Alignment::SE3;  ///< for ATE/ARE only; the KITTI metric is relative and unaligned
 	AssociationOptions association;
 	/// Ground-truth orientations are meaningless (RTK positions only): ARE and KITTI are skipped.
@@ -24,7 +25,7 @@ struct EvalOptions
 	std::string gt_name = "ground truth", est_name = "estimate";  ///< for messages (file paths)
 };
 
-/// "all" | "ate" | "kitti" -> sets opts.ate / opts.kitti; throws InputError otherwise.
+/// "all" | "ate" | "kitti" | "rpe" -> sets opts.ate / opts.kitti / opts.rpe; throws InputError otherwise.
 void parseMetric(const std::string& s, EvalOptions& opts);
 
 struct EvalReport
@@ -37,6 +38,8 @@ struct EvalReport
 	std::optional<KittiResult> kitti;  ///< set when computed, even with no segments
 	std::string kitti_note;  ///< why the KITTI numbers are missing, if they are
 	std::string kitti_frame;  ///< "camera 0" or "as given"
+	std::optional<RpeResult> rpe;
+	std::string rpe_note;  ///< why the RPE is missing, if it is
 };
 
 /// Throws InputError (naming the files in opts) when fewer than 3 poses overlap in time.

@@ -4,10 +4,7 @@
 # --collect: same numbers. Bad plans fail before anything runs.
 set -u
 BIN="${VLO_BIN:?}"
-W="${VLO_WORK:?}"
-rm -rf "$W" && mkdir -p "$W" && cd "$W" || exit 1
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+. "${VLO_SRC:?}/tests/e2e/lib/common.sh"
 # csv_field FILE SEQUENCE CONFIG TRAJECTORY COLUMN: one value of results.csv
 csv_field() {
 	awk -F, -v s="$2" -v c="$3" -v t="$4" -v col="$5" \
@@ -145,5 +142,4 @@ else
 	echo "parallel + --collect: same numbers"
 fi
 
-[ $fails -eq 0 ] && echo "batch: all passed" || echo "batch: $fails failure(s)"
-exit $((fails > 0))
+finish batch

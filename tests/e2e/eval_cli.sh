@@ -3,13 +3,7 @@
 # (one line on stderr, non-zero exit, no JSON left behind).
 set -u
 EVAL="${VLO_BIN:?}/vlo-eval"
-W="${VLO_WORK:?}"
-rm -rf "$W" && mkdir -p "$W" && cd "$W" || exit 1
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
-
-# key value from a JSON file written by vlo-eval (one key per line)
-jv() { grep -o "\"$2\": [^,]*" "$1" | head -1 | cut -d' ' -f2-; }
+. "${VLO_SRC:?}/tests/e2e/lib/common.sh"
 # near ACTUAL EXPECTED TOL
 near() { awk -v a="$1" -v e="$2" -v t="$3" 'BEGIN { d = a - e; if (d < 0) d = -d; exit !(a != "" && d <= t) }'; }
 expect_near() { near "$(jv "$1" "$2")" "$3" "$4" || fail "$1: $2 = $(jv "$1" "$2"), expected $3 +- $4"; }
@@ -100,5 +94,4 @@ expect_bad "missing --est" "missing required option '--est'" --gt curve.tum
 "$EVAL" --gt curve.tum --est curve.tum --json no-such-dir/x.json > /dev/null 2> err.txt && fail "unwritable JSON: exit 0"
 [ ! -e no-such-dir ] || fail "unwritable JSON: created something"
 
-[ $fails -eq 0 ] && echo "eval_cli: all passed" || echo "eval_cli: $fails failure(s)"
-[ $fails -eq 0 ]
+finish eval_cli

@@ -4,10 +4,7 @@
 # exit code 2 and no PNG.
 set -u
 SNAP="${VLO_BIN:?}/vlo-snapshot"
-W="${VLO_WORK:?}"
-rm -rf "$W" && mkdir -p "$W" && cd "$W" || exit 1
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+. "${VLO_SRC:?}/tests/e2e/lib/common.sh"
 
 # png_size FILE -> "W H" read from the IHDR chunk; empty if FILE is not a PNG.
 png_size() {
@@ -99,5 +96,4 @@ else
 	echo "skip: $VLO_BIN/vlo-sim not built, no rawlog frame checked"
 fi
 
-[ $fails -eq 0 ] && echo "PASS" || echo "$fails failure(s)"
-[ $fails -eq 0 ]
+finish snapshot_app

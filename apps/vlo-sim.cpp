@@ -21,6 +21,7 @@ int main(int argc, char** argv)
 				{"kitti-dir", "DIR", "also write the KITTI odometry layout (sequence 00) to DIR"},
 				{"lidar-distortion", "", "each LiDAR firing at its own time over the 0.1 s sweep"},
 				{"no-noise", "", "no image noise, range noise or dropouts (for checks)"},
+				{"foliage-depth", "M", "mean depth of LiDAR returns inside tree crowns and bushes (default 0: solid hulls)"},
 				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
 				{"quiet", "", "no progress line and no summary"}});
 		if (cl.helpRequested())
@@ -41,6 +42,8 @@ int main(int argc, char** argv)
 		cfg.kitti_poses = cl.get("trajectory");
 		cfg.lidar_distortion = cl.has("lidar-distortion");
 		if (cl.has("no-noise")) cfg.range_noise = cfg.image_noise = cfg.dropout = 0;
+		cfg.foliage_depth = cl.getDouble("foliage-depth", 0);
+		if (!(cfg.foliage_depth >= 0 && cfg.foliage_depth <= 10)) vlo::failInput("--foliage-depth", "must be between 0 and 10 m");
 		if (cl.has("blackout"))
 		{
 			const std::string b = cl.get("blackout");

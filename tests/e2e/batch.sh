@@ -69,6 +69,12 @@ cat out1.err
 [ $rc -eq 1 ] || fail "local run: exit code $rc, expected 1 (one configuration is broken)"
 [ -s data/tiny.rawlog ] && [ -s data/tiny.gt.tum ] || fail "drive not generated"
 grep -q "^vlo-batch: generated 1/1 tiny: ok, " out1.err || fail "no progress line for the generation"
+[ "$(cat data/tiny.sim.txt)" = "--scenario urban --lidar hdl64 --frames 25 --seed 5" ] || fail "no record of the sim arguments"
+# A plan whose sim line changed refuses the old drive instead of running on it.
+sed 's/--seed 5$/--seed 6/' tiny.ini > changed.ini
+"$BIN/vlo-batch" --plan changed.ini --out changed_out > /dev/null 2> err.txt && fail "changed sim line: accepted the old drive"
+grep -qF "data/tiny.rawlog: was generated with vlo-sim --scenario urban --lidar hdl64 --frames 25 --seed 5 but the plan's sim line says" err.txt ||
+	fail "changed sim line: $(cat err.txt)"
 [ "$(grep -c '^vlo-batch: run [123]/3 tiny/' out1.err)" -eq 3 ] || fail "not one progress line per run"
 grep -q "^vlo-batch: run ./3 tiny/broken: FAILED, .*unknown key 'ring_modle'" out1.err || fail "failure not reported"
 for f in plan.ini results.md results.csv snapshots/tiny.png runs/tiny/lo/trajectory_lo.tum runs/tiny/vo/aligned_vo.tum \
@@ -109,20 +115,21 @@ sed 's/^\[sequence tiny\]/[sequence other]/' tiny.ini > other.ini
 grep -qF "$BIN/vlo-sim --scenario urban --lidar hdl64 --frames 25 --seed 5 --out $W/data/other.rawlog --quiet" other-data.txt ||
 	fail "unexpected data line: $(cat other-data.txt)"
 
-# The shipped plans are valid and expand to 7 drives x 4 (paper table) and x 8 (ablation) runs. Their
+# The shipped plans are valid and expand to 7 drives x 4 (paper table) and 6 drives x 10 (ablation) runs. Their
 # KITTI drive needs odometry 00's ground-truth poses in the data folder, as doc/BATCH.md says.
 if [ -f "$VLO_DATA/kitti_gt_poses.tar.xz" ]; then
 	mkdir -p shipped && tar -xJf "$VLO_DATA/kitti_gt_poses.tar.xz" -C shipped kitti_gt_poses/00.txt
-	for p in paper-table:28 ablation:56; do
-		"$BIN/vlo-batch" --plan "$VLO_SRC/ini/experiments/${p%:*}.ini" --out "shipped/${p%:*}" --data shipped \
-			--emit-jobs "shipped/${p%:*}.jobs" --emit-data "shipped/${p%:*}.data" > /dev/null || fail "${p%:*}.ini: not a valid plan"
-		[ "$(wc -l < "shipped/${p%:*}.jobs")" -eq "${p#*:}" ] || fail "${p%:*}.ini: not ${p#*:} jobs"
-		[ "$(wc -l < "shipped/${p%:*}.data")" -eq 7 ] || fail "${p%:*}.ini: not 7 drives to generate"
+	for p in paper-table:28:7 ablation:60:6; do
+		name=${p%%:*} n=${p#*:}; drives=${n#*:}; n=${n%:*}
+		"$BIN/vlo-batch" --plan "$VLO_SRC/ini/experiments/$name.ini" --out "shipped/$name" --data shipped \
+			--emit-jobs "shipped/$name.jobs" --emit-data "shipped/$name.data" > /dev/null || fail "$name.ini: not a valid plan"
+		[ "$(wc -l < "shipped/$name.jobs")" -eq "$n" ] || fail "$name.ini: not $n jobs"
+		[ "$(wc -l < "shipped/$name.data")" -eq "$drives" ] || fail "$name.ini: not $drives drives to generate"
 	done
 	grep -qF -- "--trajectory $W/shipped/kitti_gt_poses/00.txt --frames 1450 --seed 10 --out $W/shipped/kitti00_hdl64.rawlog" \
 		shipped/paper-table.data || fail "paper-table.ini: unexpected KITTI drive line"
 	grep -qF -- "--ini $VLO_SRC/ini/vo-kitti.ini" shipped/paper-table.jobs || fail "paper-table.ini: vo_mono without its INI"
-	echo "ok: shipped plans: 28 and 56 jobs, 7 drives"
+	echo "ok: shipped plans: 28 and 60 jobs, 7 and 6 drives"
 else
 	echo "SKIP: $VLO_DATA/kitti_gt_poses.tar.xz not found: shipped plans not checked"
 fi

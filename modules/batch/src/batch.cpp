@@ -35,6 +35,13 @@ const T& named(const std::vector<T>& items, const std::string& name)
 
 bool needsGeneration(const Sequence& s) { return !s.sim.empty() && s.dataMissing(); }
 
+Plan readCheckedPlan(const BatchOptions& o)
+{
+	Plan plan = readPlan(o.plan, o.data);
+	for (const auto& s : plan.sequences) requireSameSimArgs(s);
+	return plan;
+}
+
 std::string prepareOut(const BatchOptions& o, const Plan& plan)
 {
 	const std::string out = fs::absolute(o.out).lexically_normal().string();
@@ -82,7 +89,7 @@ void report(const char* what, const TaskResult& r, std::size_t done, std::size_t
 
 int runPlan(const BatchOptions& o)
 {
-	const Plan plan = readPlan(o.plan, o.data);
+	const Plan plan = readCheckedPlan(o);
 	requireTool(o.bin_dir, "vlo-run");
 	requireTool(o.bin_dir, "vlo-eval");
 	std::vector<Task> gen;
@@ -122,7 +129,7 @@ int runPlan(const BatchOptions& o)
 
 void emitJobs(const BatchOptions& o)
 {
-	const Plan plan = readPlan(o.plan, o.data);
+	const Plan plan = readCheckedPlan(o);
 	std::vector<std::string> missing;
 	for (const auto& s : plan.sequences)
 		if (needsGeneration(s)) missing.push_back(s.name);

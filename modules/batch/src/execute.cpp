@@ -52,7 +52,9 @@ int executeDataJob(const DataJob& j)
 	if (fs::is_regular_file(j.rawlog) && fs::is_regular_file(j.gt)) return 0;
 	fs::create_directories(fs::path(j.rawlog).parent_path());
 	fs::create_directories(fs::path(j.sim.err).parent_path());
-	return runStep(j.sim);
+	const int rc = runStep(j.sim);
+	if (rc == 0) std::ofstream(j.record_path) << j.record << "\n";
+	return rc;
 }
 
 int executeRunJob(const RunJob& j)

@@ -1,7 +1,11 @@
 #include <vlo/batch/jobs.h>
 #include <vlo/batch/words.h>
 
+#include <vlo/core/error.h>
+
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 namespace vlo::batch
 {
@@ -21,7 +25,36 @@ DataJob dataJob(const Sequence& s, const std::string& bin_dir, const std::string
 	for (const char* a : {"--out", s.rawlog.c_str(), "--quiet"}) j.sim.argv.push_back(a);
 	j.sim.out = out + "/generate/" + s.name + ".out";
 	j.sim.err = out + "/generate/" + s.name + ".err";
+	j.record_path = simRecordPath(s);
+	j.record = simRecord(s);
 	return j;
+}
+
+std::string simRecordPath(const Sequence& s)
+{
+	const std::filesystem::path r(s.rawlog);
+	return (r.parent_path() / (r.stem().string() + ".sim.txt")).string();
+}
+
+std::string simRecord(const Sequence& s)
+{
+	const std::filesystem::path data = std::filesystem::path(s.rawlog).parent_path();
+	std::vector<std::string> args = s.sim;
+	for (std::size_t i = 0; i + 1 < args.size(); ++i)
+		if (args[i] == "--trajectory") args[i + 1] = std::filesystem::path(args[i + 1]).lexically_relative(data).string();
+	return shellJoin(args);
+}
+
+void requireSameSimArgs(const Sequence& s)
+{
+	if (s.sim.empty() || s.dataMissing()) return;
+	std::ifstream in(simRecordPath(s));
+	if (!in) return;
+	std::string recorded;
+	std::getline(in, recorded);
+	if (recorded != simRecord(s))
+		failInput(s.rawlog, "was generated with vlo-sim " + recorded + " but the plan's sim line says " + simRecord(s) +
+				": delete the drive (.rawlog, .gt.tum, _Images/, .sim.txt) to generate it again");
 }
 
 RunJob runJob(const Plan& p, const Sequence& s, const Config& c, const std::string& bin_dir, const std::string& out)
@@ -71,7 +104,7 @@ std::string shellLine(const DataJob& j)
 	const std::string logDir = std::filesystem::path(j.sim.err).parent_path().string();
 	return "[ -s " + shellQuote(j.rawlog) + " ] && [ -s " + shellQuote(j.gt) + " ] || { mkdir -p " +
 		shellQuote(dataDir) + " " + shellQuote(logDir) + " && " + shellJoin(j.sim.argv) + " > " + shellQuote(j.sim.out) +
-		" 2> " + shellQuote(j.sim.err) + "; }";
+		" 2> " + shellQuote(j.sim.err) + " && printf '%s\\n' " + shellQuote(j.record) + " > " + shellQuote(j.record_path) + "; }";
 }
 
 std::string shellLine(const RunJob& j)

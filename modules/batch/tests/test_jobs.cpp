@@ -166,10 +166,40 @@ TEST(BatchJobs, DataLineGeneratesOnlyWhatIsMissing)
 	EXPECT_EQ(runStep(sh), 0);
 	EXPECT_TRUE(fs::is_regular_file(data + "/seq.rawlog"));
 	EXPECT_TRUE(fs::is_regular_file(data + "/seq.gt.tum"));
+	EXPECT_EQ(test::readFile(data + "/seq.sim.txt"), "--scenario urban --frames 3\n");
 	EXPECT_EQ(runStep(sh), 0);
 	EXPECT_EQ(executeDataJob(d), 0);
 	EXPECT_EQ(test::readFile(data + "/calls"), "sim\n");  // once
 	fs::remove(data + "/seq.gt.tum");
 	EXPECT_EQ(executeDataJob(d), 0);
-	EXPECT_EQ(test::readFile(data + "/calls"), "sim\nsim\n");
+	EXPECT_EQ(test::readFile(data + "/calls"), "sim\nsim\n");	EXPECT_EQ(test::readFile(data + "/seq.sim.txt"), "--scenario urban --frames 3\n");
+}
+
+TEST(BatchJobs, ADriveGeneratedWithOtherArgumentsIsRefused)
+{
+	test::ScratchDir dir("record");
+	const std::string data = dir / "data";
+	Plan p = tinyPlan(data);
+	Sequence& s = p.sequences[0];
+	s.sim = {"--scenario", "urban", "--trajectory", data + "/poses/00.txt"};
+	EXPECT_EQ(simRecord(s), "--scenario urban --trajectory poses/00.txt");  // relative: the data folder may move
+	EXPECT_NO_THROW(requireSameSimArgs(s));  // nothing there yet: it will be generated
+	test::writeFile(s.rawlog, "x");
+	test::writeFile(s.gt, "t");
+	EXPECT_NO_THROW(requireSameSimArgs(s));  // no record: made elsewhere, used as it is
+	test::writeFile(data + "/seq.sim.txt", "--scenario urban --trajectory poses/00.txt\n");
+	EXPECT_NO_THROW(requireSameSimArgs(s));
+	s.sim.push_back("--foliage-depth");
+	s.sim.push_back("0.3");
+	try
+	{
+		requireSameSimArgs(s);
+		ADD_FAILURE() << "a stale drive was accepted";
+	}
+	catch (const InputError& e)
+	{
+		const std::string m = e.what();
+		EXPECT_NE(m.find("seq.rawlog"), std::string::npos) << m;
+		EXPECT_NE(m.find("--foliage-depth 0.3"), std::string::npos) << m;
+	}
 }

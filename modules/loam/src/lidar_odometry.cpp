@@ -72,9 +72,11 @@ LidarOdometryResult LidarOdometry::skip(LidarOdometryResult r, const std::string
 void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, Eigen::Isometry3d& odom, Eigen::Isometry3d& pose)
 {
 	auto t0 = SteadyClock::now();
-	// Scan-to-scan, against the last usable scan (frames in between were skipped).
+	// Scan-to-scan, against the last usable scan (frames in between were skipped); not when an
+	// external motion goes straight to scan-to-map.
 	odom = odom_pose_ * r.guess;
-	if (opt_.odometry.enabled && odometry_.hasReference())
+	const bool externalToMap = opt_.prior.external_stage == "mapping" && r.prior_source == "external";
+	if (opt_.odometry.enabled && odometry_.hasReference() && !externalToMap)
 	{
 		r.odometry = odometry_.match(f, odom_ref_.inverse() * odom);
 		odom = odom_ref_ * r.odometry.T_prev_curr;

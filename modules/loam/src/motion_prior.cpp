@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace vlo::loam
 {
@@ -58,20 +59,26 @@ bool ExternalPrior::agrees(const Eigen::Isometry3d& external, const Eigen::Isome
 Eigen::Isometry3d ExternalPrior::predict(double t, const std::optional<Eigen::Isometry3d>& external)
 {
 	const Eigen::Isometry3d cv = fallback_.predict(t, std::nullopt);
-	if (external && plausible(*external) && fallback_.hasVelocity() && !agrees(*external, cv))
+	const std::optional<Eigen::Isometry3d> previous = std::exchange(last_external_, std::nullopt);
+	if (!external || !plausible(*external))
+	{
+		source_ = fallback_.lastSource();
+		return cv;
+	}
+	last_external_ = *external;
+	// A visual odometry that loses track jumps away from both the vehicle's motion so far and its own
+	// motion of the frame before; LOAM failing in a degenerate scene makes constant velocity wrong
+	// but leaves the visual odometry consistent with itself, so it is followed then.
+	const bool consistent = previous && agrees(*external, *previous);
+	if (fallback_.hasVelocity() && !agrees(*external, cv) && !consistent)
 	{
 		source_ = "constant_velocity (external rejected)";
 		return cv;
 	}
-	if (external && plausible(*external))
-	{
-		source_ = "external";
-		Eigen::Isometry3d T = *external;
-		T.linear() = orthonormalize(T.linear());  // visual odometry output may be slightly off SO(3)
-		return T;
-	}
-	source_ = fallback_.lastSource();
-	return cv;
+	source_ = "external";
+	Eigen::Isometry3d T = *external;
+	T.linear() = orthonormalize(T.linear());  // visual odometry output may be slightly off SO(3)
+	return T;
 }
 
 std::unique_ptr<MotionPrior> makeMotionPrior(const PriorOptions& o)

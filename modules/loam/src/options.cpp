@@ -12,6 +12,7 @@ using detail::require;
 void PriorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	source = c.read_string_first_word(s, "source", source);
+	external_stage = c.read_string_first_word(s, "external_stage", external_stage);
 	VLO_NUM(max_translation, double);
 	VLO_NUM(max_rotation_deg, double);
 	VLO_NUM(max_deviation, double);
@@ -23,8 +24,9 @@ void PriorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std:
 	MRPT_SAVE_CONFIG_VAR_COMMENT(source, "constant_velocity (A-LOAM) | external (e.g. visual odometry)");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(max_translation, "external motion longer than this is rejected [m]");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(max_rotation_deg, "external motion turning more is rejected [deg]");
-	MRPT_SAVE_CONFIG_VAR_COMMENT(max_deviation, "external motion this far from constant velocity is rejected [m]");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(max_deviation, "external motion this far from constant velocity and from its own last motion is rejected [m]");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(max_deviation_deg, "... or turning this differently [deg]");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(external_stage, "odometry: the external motion initialises scan-to-scan | mapping: scan-to-map, scan-to-scan skipped");
 }
 
 void PriorOptions::validate() const
@@ -32,6 +34,8 @@ void PriorOptions::validate() const
 	const std::string s = "loam.prior";
 	require(source == "constant_velocity" || source == "external", s, "source",
 		"'" + source + "' is not one of constant_velocity, external");
+	require(external_stage == "odometry" || external_stage == "mapping", s, "external_stage",
+		"'" + external_stage + "' is not one of odometry, mapping");
 	require(max_translation > 0, s, "max_translation", "must be > 0");
 	require(max_rotation_deg > 0, s, "max_rotation_deg", "must be > 0");
 	require(max_deviation > 0, s, "max_deviation", "must be > 0");

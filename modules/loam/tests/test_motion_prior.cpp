@@ -79,6 +79,30 @@ TEST(MotionPrior, ExternalFarFromConstantVelocityIsRejected)
 	}
 }
 
+TEST(MotionPrior, ExternalConsistentWithItselfIsKeptWhenConstantVelocityIsWrong)
+{
+	PriorOptions o;
+	o.source = "external";
+	ExternalPrior p(o);
+	p.update(0.0, Eigen::Isometry3d::Identity());
+	p.update(0.1, Eigen::Isometry3d::Identity());  // LOAM stuck: it found no motion
+	EXPECT_TRUE(p.predict(0.2, step(0.9, 0.0)).isApprox(Eigen::Isometry3d::Identity(), 1e-9));  // 0.9 m off, nothing to confirm it
+	EXPECT_EQ(p.lastSource(), "constant_velocity (external rejected)");
+	p.update(0.2, Eigen::Isometry3d::Identity());
+	EXPECT_TRUE(p.predict(0.3, step(0.95, 0.5)).isApprox(step(0.95, 0.5), 1e-9));  // agrees with its last motion
+	EXPECT_EQ(p.lastSource(), "external");
+	p.update(0.3, step(0.95, 0.5));
+	p.predict(0.4, std::nullopt);  // a frame without external motion: the next one has nothing to agree with
+	p.update(0.4, step(0.95, 0.5));
+	EXPECT_TRUE(p.predict(0.5, step(2.0, 0.0)).isApprox(step(0.95, 0.5), 1e-9));
+	EXPECT_EQ(p.lastSource(), "constant_velocity (external rejected)");
+	p.reset();
+	p.update(0.0, Eigen::Isometry3d::Identity());
+	p.update(0.1, Eigen::Isometry3d::Identity());
+	p.predict(0.2, step(0.9, 0.0));
+	EXPECT_EQ(p.lastSource(), "constant_velocity (external rejected)");  // reset forgets the last external motion
+}
+
 TEST(MotionPrior, MadeByName)
 {
 	PriorOptions o;

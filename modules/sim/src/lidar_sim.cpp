@@ -76,7 +76,7 @@ std::vector<View> LidarSim::views(const PoseAt& world_T_lidar) const
 }
 
 PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::vector<View>& views, const PoseAt& world_T_lidar,
-	const LidarNoise& noise, Rng& rng) const
+	const Foliage& foliage, const LidarNoise& noise, Rng& rng) const
 {
 	PointCloud cloud;
 	cloud.reserve(dirs_.size());
@@ -95,6 +95,8 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 			double r = 0;
 			uint8_t gray = 0;
 			if (!look.intersect(T.translation(), T.linear() * dL, r, gray)) continue;
+			const Eigen::Isometry3d& W = views[vi].world_T_cam;
+			if (!foliage.penetrate(W * T.translation(), W.linear() * (T.linear() * dL), noise.foliage_depth, rng, r)) continue;
 			const double noisy = r + noise.range_sigma * rng.normal();
 			if (rng.uniform() < noise.dropout || noisy < model_.min_range || noisy > model_.max_range) continue;
 			const Eigen::Vector3d p = noisy * dL;

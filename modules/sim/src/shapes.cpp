@@ -75,6 +75,7 @@ void addBlob(World& w, const Eigen::Vector3d& c, const Eigen::Vector3d& radii, d
 		f.swap(f2);
 	}
 	for (auto& p : v) p = c + (p.cwiseProduct(radii)) * (1 + roughness * rng.uniform(-1, 1));
+	w.foliage().add(c, radii, roughness);
 	for (const auto& t : f) addProjectedTriangle(w, tex, v[t[0]], v[t[1]], v[t[2]]);
 }
 }  // namespace vlo::sim

@@ -160,7 +160,7 @@ Frame Simulator::frame(int k, RenderedView* camera_depth)
 	Rng lidarNoise = Rng::stream(d.cfg.seed, "lidar noise", static_cast<uint64_t>(k));
 	const std::vector<RenderedView> lt(std::make_move_iterator(tiles.begin() + 1), std::make_move_iterator(tiles.end()));
 	const std::vector<View> lv(views.begin() + 1, views.end());
-	f.scan = d.lidar->sample(lt, lv, lidarAt, {d.cfg.range_noise, d.cfg.dropout}, lidarNoise);
+	f.scan = d.lidar->sample(lt, lv, lidarAt, d.world.foliage(), {d.cfg.range_noise, d.cfg.dropout, d.cfg.foliage_depth}, lidarNoise);
 	f.has_scan = true;
 	if (camera_depth) *camera_depth = std::move(tiles[0]);
 	return f;

@@ -90,7 +90,7 @@ PointCloud scan(const World& w, const LidarSim& lidar, double time, const LidarN
 	std::vector<RenderedView> out;
 	renderer.render(scene, views, out, true);
 	Rng rng(seed);
-	return lidar.sample(out, views, at, noise, rng);
+	return lidar.sample(out, views, at, w.foliage(), noise, rng);
 }
 }  // namespace
 

@@ -36,6 +36,7 @@ struct DataJob
 	std::string name;  ///< the sequence
 	std::string rawlog, gt;  ///< what it makes
 	Step sim;  ///< vlo-sim; its logs are absolute: OUT/generate/NAME.{out,err}
+	std::string record_path, record;  ///< written after a successful vlo-sim (simRecord)
 };
 
 struct RunJob
@@ -53,6 +54,13 @@ struct RunJob
 
 std::string runDir(const std::string& out, const std::string& sequence, const std::string& config);
 DataJob dataJob(const Sequence& s, const std::string& bin_dir, const std::string& out);
+/// NAME.sim.txt beside a drive vlo-batch generated: its vlo-sim arguments (paths relative to the data
+/// folder), so that a plan whose sim line changed does not silently run on the old drive.
+std::string simRecordPath(const Sequence& s);
+std::string simRecord(const Sequence& s);
+/// InputError when the drive exists and its record names other arguments than the plan's sim line. A
+/// drive without a record was made elsewhere and is used as it is.
+void requireSameSimArgs(const Sequence& s);
 RunJob runJob(const Plan& p, const Sequence& s, const Config& c, const std::string& bin_dir, const std::string& out);
 /// Every sequence x configuration, sequences outermost (plan order).
 std::vector<RunJob> runJobs(const Plan& p, const std::string& bin_dir, const std::string& out);

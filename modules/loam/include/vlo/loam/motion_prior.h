@@ -43,8 +43,9 @@ class ConstantVelocityPrior : public MotionPrior
 	std::string source_ = "none";
 };
 
-/// Uses the externally supplied motion when present, plausible, and close to the constant-velocity
-/// prediction (when there is one); else constant velocity.
+/// Uses the externally supplied motion when present, plausible, and close either to the
+/// constant-velocity prediction (when there is one) or to the external motion of the frame before;
+/// else constant velocity.
 class ExternalPrior : public MotionPrior
 {
    public:
@@ -52,7 +53,7 @@ class ExternalPrior : public MotionPrior
 	Eigen::Isometry3d predict(double t, const std::optional<Eigen::Isometry3d>& external) override;
 	std::string lastSource() const override { return source_; }
 	void update(double t, const Eigen::Isometry3d& T_prev_curr) override { fallback_.update(t, T_prev_curr); }
-	void reset() override { fallback_.reset(); }
+	void reset() override { fallback_.reset(), last_external_.reset(); }
 
 	/// Finite, a proper rotation, and within the configured translation/rotation bounds.
 	bool plausible(const Eigen::Isometry3d& T) const;
@@ -63,6 +64,7 @@ class ExternalPrior : public MotionPrior
 	PriorOptions opt_;
 	ConstantVelocityPrior fallback_;
 	std::string source_ = "none";
+	std::optional<Eigen::Isometry3d> last_external_;  ///< the previous frame's external motion, if any
 };
 
 /// The prior named by o.source.

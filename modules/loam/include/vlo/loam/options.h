@@ -116,10 +116,15 @@ struct PriorOptions : public mrpt::config::CLoadableOptions
 	std::string source = "constant_velocity";  ///< constant_velocity | external
 	double max_translation = 5.0;  ///< an external motion longer than this is rejected [m]
 	double max_rotation_deg = 30.0;  ///< ... or turning more than this [deg]
-	/// An external motion this far from the constant-velocity prediction is rejected [m] (a vehicle's
-	/// speed changes by < 0.1 m per 0.1 s frame; a lost visual odometry jumps by more).
+	/// An external motion this far both from the constant-velocity prediction and from the previous
+	/// frame's external motion is rejected [m] (a vehicle's speed changes by < 0.1 m per 0.1 s frame;
+	/// a lost visual odometry jumps by more).
 	double max_deviation = 0.5;
 	double max_deviation_deg = 3.0;  ///< ... or turning this much differently [deg]
+	/// Where an accepted external motion enters: "odometry" = it initialises scan-to-scan odometry,
+	/// whose result initialises scan-to-map (A-LOAM's chain, the constant-velocity guess replaced);
+	/// "mapping" = it initialises scan-to-map directly and scan-to-scan is skipped for that frame.
+	std::string external_stage = "odometry";
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;

@@ -49,6 +49,9 @@ struct SimConfig
 	double range_noise = 0.02;  ///< m, 1 sigma
 	double image_noise = 2.0;  ///< gray levels, 1 sigma
 	double dropout = 0.005;  ///< probability that a return is lost
+	/// Mean depth (m) at which a LiDAR beam that enters a tree crown or bush returns from a leaf (see
+	/// foliage.h); 0 = crowns are solid hulls for the LiDAR as for the camera.
+	double foliage_depth = 0;
 	/// Frames [blackout_first, blackout_end) get a uniform grey image: a blinded camera (glare, a tunnel
 	/// exit), to exercise the VO's LOST state and the LiDAR-only fallback.
 	int blackout_first = -1, blackout_end = -1;

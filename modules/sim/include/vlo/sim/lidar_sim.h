@@ -11,6 +11,7 @@
 // uses the pose at t; with it, each point is in the LiDAR frame at its own firing time.
 #include <vlo/core/frame.h>
 #include <vlo/sim/config.h>
+#include <vlo/sim/foliage.h>
 #include <vlo/sim/renderer.h>
 
 #include <functional>
@@ -23,6 +24,7 @@ struct LidarNoise
 {
 	double range_sigma = 0.02;  ///< m
 	double dropout = 0.005;  ///< probability of a lost return
+	double foliage_depth = 0;  ///< m, mean depth of a return inside a crown (0: the hull returns)
 };
 
 class LidarSim
@@ -38,9 +40,10 @@ class LidarSim
 	using PoseAt = std::function<Eigen::Isometry3d(double tau)>;  ///< world_T_lidar at t + tau
 	/// The views to render for one sweep.
 	std::vector<View> views(const PoseAt& world_T_lidar) const;
-	/// Points (LiDAR frame, firing order: azimuth-major) from the rendered views.
+	/// Points (LiDAR frame, firing order: azimuth-major) from the rendered views; beams that hit a crown
+	/// of `foliage` return from inside it (LidarNoise::foliage_depth).
 	PointCloud sample(const std::vector<RenderedView>& tiles, const std::vector<View>& views, const PoseAt& world_T_lidar,
-		const LidarNoise& noise, Rng& rng) const;
+		const Foliage& foliage, const LidarNoise& noise, Rng& rng) const;
 
    private:
 	struct ViewDef

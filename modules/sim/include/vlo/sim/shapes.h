@@ -17,7 +17,7 @@ void addBox(World& w, const Eigen::Isometry3d& frame, double sx, double sy, doub
 /// Upright prism (n sides, circumradius r, height h) on the frame's origin, texture wrapped around.
 void addPrism(World& w, const Eigen::Isometry3d& frame, double r, double h, int sides, int tex);
 /// Irregular closed blob (tree canopy, bush): a subdivided icosahedron with radii (rx, ry, rz) and
-/// random bumps of relative size `roughness`, centred at c.
+/// random bumps of relative size `roughness`, centred at c; registered as foliage (see foliage.h).
 void addBlob(World& w, const Eigen::Vector3d& c, const Eigen::Vector3d& radii, double roughness, int tex, Rng& rng);
 /// Triangle with texture coordinates projected on the plane its normal faces most (no seams).
 void addProjectedTriangle(World& w, int tex, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);

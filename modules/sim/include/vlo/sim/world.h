@@ -2,6 +2,7 @@
 // The simulated world: textured triangles grouped by texture. It becomes one MRPT scene (one
 // CSetOfTexturedTriangles per texture: textured shaders render depth precisely, see the field notes)
 // and also answers exact ray casts, which the tests use as the geometric truth.
+#include <vlo/sim/foliage.h>
 #include <vlo/sim/textures.h>
 
 #include <mrpt/opengl/CSetOfObjects.h>
@@ -36,6 +37,10 @@ class World
 	void addMetricQuad(int tex, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
 		const Eigen::Vector3d& d, double u0 = 0, double v0 = 0);
 
+	/// Crowns and bushes, which the LiDAR sees as leaves inside the hull (addBlob registers them).
+	Foliage& foliage() { return foliage_; }
+	const Foliage& foliage() const { return foliage_; }
+
 	std::size_t triangleCount() const;
 	/// Builds the renderable scene content (call once; textures are uploaded on first render).
 	mrpt::opengl::CSetOfObjects::Ptr makeOpenGL() const;
@@ -55,6 +60,7 @@ class World
 		std::vector<const Tri*> tris;
 	};
 	std::vector<Texture> textures_;
+	Foliage foliage_;
 	std::vector<bool> shaded_;
 	std::map<std::pair<int, int>, int> variants_;  // (texture, shade level) -> texture
 	int shadedVariant(int tex, const Eigen::Vector3d& normal);

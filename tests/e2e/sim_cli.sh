@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # vlo-sim from the command line: help, bad input, determinism (same seed, same bytes), what
-# rawlog-edit sees, and the scenario, LiDAR, distortion and KITTI-trajectory variants.
+# rawlog-edit sees, and the scenario, LiDAR, distortion, foliage and KITTI-trajectory variants.
 set -euo pipefail
 : "${VLO_BIN:?}" "${VLO_WORK:?}" "${VLO_DATA:?}"
 rm -rf "$VLO_WORK" && mkdir -p "$VLO_WORK" && cd "$VLO_WORK"
@@ -20,6 +20,7 @@ expect_error "unknown LiDAR 'hdl32'" --lidar hdl32 --out x.rawlog
 expect_error "missing required option '--out'" --frames 2
 expect_error "frames" --frames 0 --out x.rawlog
 expect_error "nope.txt" --trajectory nope.txt --out x.rawlog
+expect_error "foliage-depth: must be between 0 and 10 m" --foliage-depth -1 --out x.rawlog
 if ls x.* x_Images ./*.partial > /dev/null 2>&1; then fail "output left after an error"; fi
 
 # Same seed, same bytes: rawlog, images, ground truth.
@@ -30,6 +31,11 @@ cmp a/t.gt.tum b/t.gt.tum || fail "ground truth differs"
 for f in a/t_Images/*.png; do cmp "$f" "b/t_Images/$(basename "$f")" || fail "$f differs"; done
 sim --scenario trees --lidar vlp16 --frames 3 --seed 6 --out c/t.rawlog
 cmp -s a/t.gt.tum c/t.gt.tum && fail "another seed gave the same drive"
+
+# Foliage changes what the LiDAR returns, not what the camera sees.
+sim --scenario trees --lidar vlp16 --frames 3 --seed 5 --foliage-depth 0.3 --out f/t.rawlog
+for f in a/t_Images/*.png; do cmp "$f" "f/t_Images/$(basename "$f")" || fail "foliage changed the image $f"; done
+cmp -s a/t.rawlog f/t.rawlog && fail "foliage did not change the scans"
 
 [ "$(grep -vc '^#' a/t.gt.tum)" -eq 3 ] || fail "3 ground-truth poses expected"
 head -1 a/t.gt.tum | grep -q "^0.000000000 0.000000000 0.000000000 0.000000000 0.000000000 0.000000000 0.000000000 1.000000000" ||

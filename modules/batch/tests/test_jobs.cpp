@@ -172,7 +172,8 @@ TEST(BatchJobs, DataLineGeneratesOnlyWhatIsMissing)
 	EXPECT_EQ(test::readFile(data + "/calls"), "sim\n");  // once
 	fs::remove(data + "/seq.gt.tum");
 	EXPECT_EQ(executeDataJob(d), 0);
-	EXPECT_EQ(test::readFile(data + "/calls"), "sim\nsim\n");	EXPECT_EQ(test::readFile(data + "/seq.sim.txt"), "--scenario urban --frames 3\n");
+	EXPECT_EQ(test::readFile(data + "/calls"), "sim\nsim\n");
+	EXPECT_EQ(test::readFile(data + "/seq.sim.txt"), "--scenario urban --frames 3\n");
 }
 
 TEST(BatchJobs, ADriveGeneratedWithOtherArgumentsIsRefused)

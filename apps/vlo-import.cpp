@@ -35,12 +35,13 @@ int kittiOdometry(int argc, char** argv)
 			{"seq", "NN", "sequence number as in the folder name, e.g. 06", true},
 			{"out", "FILE.rawlog", "output rawlog; ground truth goes to FILE.gt.tum", true},
 			{"first", "I", "first frame (default 0)"}, {"last", "J", "last frame, inclusive (default: the last)"},
+			{"camera", "X", "camera 0..3: image_X with PX (default 0; 2 = left colour, stored grayscale)"},
 			{"camera-label", "L", "sensor label of the images (default CAMERA)"},
 			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}});
 	if (cl.helpRequested())
 	{
 		std::cout << cl.usage("Usage: vlo-import kitti-odometry --root ROOT --seq NN --out FILE.rawlog [options]\n"
-							  "Camera 0 (grayscale) + Velodyne; vehicle frame = Velodyne frame. Without velodyne/ or\n"
+							  "Camera X (image_X, PX) + Velodyne; vehicle frame = Velodyne frame. Without velodyne/ or\n"
 							  "without Tr in calib.txt the rawlog is camera-only (with a warning).");
 		return 0;
 	}
@@ -50,6 +51,7 @@ int kittiOdometry(int argc, char** argv)
 	opt.out = cl.get("out");
 	opt.first = cl.getInt("first", 0);
 	opt.last = cl.getInt("last", -1);
+	opt.camera = static_cast<int>(cl.getInt("camera", 0));
 	opt.camera_label = cl.get("camera-label", opt.camera_label);
 	opt.lidar_label = cl.get("lidar-label", opt.lidar_label);
 	report(vlo::importKittiOdometry(opt));

@@ -2,8 +2,6 @@
 #include <vlo/core/se3.h>
 #include <vlo/io/frame_observations.h>
 
-#include <mrpt/maps/CPointsMapXYZI.h>
-
 #include <cmath>
 
 namespace vlo
@@ -24,16 +22,13 @@ mrpt::img::TCamera toTCamera(const PinholeCamera& cam)
 	p.ncols = static_cast<uint32_t>(cam.width);
 	p.nrows = static_cast<uint32_t>(cam.height);
 	p.setIntrinsicParamsFromValues(cam.fx, cam.fy, cam.cx, cam.cy);
-	p.distortion = mrpt::img::DistortionModel::none;
-	p.dist.fill(0.0);
+	p.distortion = cam.distortion;
+	p.dist = cam.dist;
 	return p;
 }
 
 PinholeCamera fromTCamera(const mrpt::img::TCamera& params, const std::string& where)
 {
-	for (double d : params.dist)
-		if (d != 0.0)
-			failInput(where, "camera has lens distortion; vlo needs rectified images (distortion none, dist all 0)");
 	PinholeCamera cam;
 	cam.fx = params.fx();
 	cam.fy = params.fy();
@@ -43,6 +38,13 @@ PinholeCamera fromTCamera(const mrpt::img::TCamera& params, const std::string& w
 	cam.height = static_cast<int>(params.nrows);
 	if (!cam.valid() || !std::isfinite(cam.cx) || !std::isfinite(cam.cy))
 		failInput(where, "invalid camera intrinsics (fx, fy and the resolution must be positive)");
+	cam.distortion = params.distortion;
+	cam.dist = params.dist;
+	for (double d : cam.dist)
+		if (!std::isfinite(d)) failInput(where, "invalid lens distortion coefficient (not finite)");
+	if (cam.distortion != mrpt::img::DistortionModel::none && cam.distortion != mrpt::img::DistortionModel::plumb_bob &&
+		cam.distortion != mrpt::img::DistortionModel::kannala_brandt)
+		failInput(where, "unknown lens distortion model (known: none, plumb_bob, kannala_brandt)");
 	return cam;
 }
 
@@ -55,36 +57,6 @@ CObservationImage::Ptr toImageObservation(const Frame& frame, const std::string&
 	obs->cameraParams = toTCamera(frame.rig.camera);
 	obs->image = frame.image;  // shallow: shares pixels
 	return obs;
-}
-
-CObservationPointCloud::Ptr toScanObservation(const Frame& frame, const std::string& label)
-{
-	auto obs = CObservationPointCloud::Create();
-	obs->sensorLabel = label;
-	obs->timestamp = toTimestamp(frame.t);
-	obs->sensorPose = toCPose3D(frame.rig.vehicle_T_lidar);
-	auto map = mrpt::maps::CPointsMapXYZI::Create();
-	map->reserve(frame.scan.size());
-	for (const auto& p : frame.scan) map->insertPointRGB(p.x, p.y, p.z, p.intensity, 0, 0);
-	obs->pointcloud = map;
-	return obs;
-}
-
-std::size_t fromPointsMap(const mrpt::maps::CPointsMap& map, PointCloud& out)
-{
-	const auto& xs = map.getPointsBufferRef_x();
-	const auto& ys = map.getPointsBufferRef_y();
-	const auto& zs = map.getPointsBufferRef_z();
-	const auto* xyzi = dynamic_cast<const mrpt::maps::CPointsMapXYZI*>(&map);
-	out.clear();
-	out.reserve(xs.size());
-	for (std::size_t i = 0; i < xs.size(); ++i)
-	{
-		if (!std::isfinite(xs[i]) || !std::isfinite(ys[i]) || !std::isfinite(zs[i])) continue;
-		const float in = xyzi ? xyzi->getPointIntensity_fast(i) : 0.0f;
-		out.push_back({xs[i], ys[i], zs[i], std::isfinite(in) ? in : 0.0f});
-	}
-	return xs.size() - out.size();
 }
 
 mrpt::img::CImage toGray(const mrpt::img::CImage& img)

@@ -103,12 +103,17 @@ Eigen::Isometry3d nominalCam0TVehicle()
 	return T;
 }
 
-KittiOdometryCalib readKittiOdometryCalib(const std::string& calib_txt)
+KittiOdometryCalib readKittiOdometryCalib(const std::string& calib_txt, int camera)
 {
 	const KittiCalibFile f(calib_txt);
 	KittiOdometryCalib c;
 	c.P0 = f.matrix34("P0");
 	if (c.P0(0, 0) <= 0 || c.P0(1, 1) <= 0) failInput(calib_txt, "P0 has a non-positive focal length");
+	if (camera < 0 || camera > 3) failInput(calib_txt, "camera " + std::to_string(camera) + " does not exist (0..3)");
+	const std::string Pc = "P" + std::to_string(camera);
+	c.camera = camera;
+	c.P = f.matrix34(Pc);
+	if (c.P(0, 0) <= 0 || c.P(1, 1) <= 0) failInput(calib_txt, Pc + " has a non-positive focal length");
 	c.has_tr = f.has("Tr");
 	c.cam0_T_velo = c.has_tr ? rigidFrom34(f.matrix34("Tr")) : nominalCam0TVehicle();
 	return c;

@@ -37,8 +37,9 @@ ImportSummary importKittiOdometry(const KittiOdometryImport& opt)
 	summary.rawlog = opt.out;
 	const std::string seq = (fs::path(opt.root) / "sequences" / opt.seq).string();
 	const std::string calib_path = seq + "/calib.txt", times_path = seq + "/times.txt";
-	const auto calib = readKittiOdometryCalib(calib_path);
-	const auto images = listNumberedFiles(seq + "/image_0", "png");
+	const auto calib = readKittiOdometryCalib(calib_path, opt.camera);
+	const std::string image_dir = seq + "/image_" + std::to_string(opt.camera);
+	const auto images = listNumberedFiles(image_dir, "png");
 	const auto times = readKittiTimes(times_path);
 
 	const bool has_velodyne = fs::is_directory(seq + "/velodyne");
@@ -72,7 +73,7 @@ ImportSummary importKittiOdometry(const KittiOdometryImport& opt)
 		}
 		frames.push_back(f);
 	}
-	if (frames.empty()) failInput(seq + "/image_0", "no images in the frame range " + std::to_string(opt.first) + ".." + std::to_string(last));
+	if (frames.empty()) failInput(image_dir, "no images in the frame range " + std::to_string(opt.first) + ".." + std::to_string(last));
 	if (missing_scans > 0)
 		summary.warnings.push_back(seq + "/velodyne: " + std::to_string(missing_scans) + " frames have no scan");
 
@@ -86,9 +87,9 @@ ImportSummary importKittiOdometry(const KittiOdometryImport& opt)
 
 	SensorRig rig;
 	rig.has_camera = true;
-	rig.camera = intrinsicsOf(calib.P0, 0, 0);  // size from the first image
-	Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
-	offset.translation() = offsetOf(calib.P0);
+	rig.camera = intrinsicsOf(calib.P, 0, 0);  // size from the first image
+	Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();  // camera X's centre from camera 0's
+	offset.translation() = offsetOf(calib.P);
 	rig.vehicle_T_camera = (offset * calib.cam0_T_velo).inverse();
 	rig.has_lidar = lidar;
 	writeKittiFrames(frames, rig, opt.camera_label, opt.lidar_label, "kitti-odometry " + opt.seq, summary);

@@ -91,8 +91,10 @@ void writePcd(const std::string& path, const PointCloud& cloud, PcdFormat format
 		<< cloud.size() << "\nDATA " << (binary ? "binary" : "ascii") << "\n";
 	if (binary)
 	{
-		static_assert(sizeof(LidarPoint) == 16, "LidarPoint is written as four packed float32");
-		out.write(reinterpret_cast<const char*>(cloud.data()), std::streamsize(cloud.size() * sizeof(LidarPoint)));
+		std::vector<float> packed;
+		packed.reserve(4 * cloud.size());
+		for (const auto& p : cloud) packed.insert(packed.end(), {p.x, p.y, p.z, p.intensity});
+		out.write(reinterpret_cast<const char*>(packed.data()), std::streamsize(packed.size() * sizeof(float)));
 	}
 	else
 	{

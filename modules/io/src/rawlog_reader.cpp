@@ -4,6 +4,7 @@
 #include <vlo/core/se3.h>
 #include <vlo/io/frame_observations.h>
 #include <vlo/io/frame_pairing.h>
+#include <vlo/io/lidar_observations.h>
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/io/rawlog_writer.h>
 
@@ -35,7 +36,7 @@ struct RawlogReader::Impl
 	RawlogStats stats;
 	std::deque<double> img_t, scan_t;  // times of the queued observations (for pairStep)
 	std::deque<CObservationImage::Ptr> imgs;
-	std::deque<CObservationPointCloud::Ptr> scans;
+	std::deque<CObservation::Ptr> scans;
 	std::optional<double> last_img_t, last_scan_t;
 	bool eof = false;
 	int first_w = -1, first_h = -1;
@@ -77,11 +78,11 @@ struct RawlogReader::Impl
 		}
 		else if (obs->sensorLabel == opt.lidar_label)
 		{
-			auto pc = std::dynamic_pointer_cast<CObservationPointCloud>(obs);
-			if (!pc)
-				failInput(path, "'" + opt.lidar_label + "' observation is a " + cls + ", expected CObservationPointCloud");
-			scan_t.push_back(timeOf(*pc, last_scan_t));
-			scans.push_back(pc);
+			if (!isScanObservation(*obs))
+				failInput(path, "'" + opt.lidar_label + "' observation is a " + cls +
+						", expected CObservationPointCloud or CObservationVelodyneScan");
+			scan_t.push_back(timeOf(*obs, last_scan_t));
+			scans.push_back(obs);
 		}
 		else
 			++stats.other_labels;
@@ -129,12 +130,16 @@ struct RawlogReader::Impl
 		const double t = scan_t.front();
 		scans.pop_front();
 		scan_t.pop_front();
-		obs->load();  // no-op unless the cloud is stored externally
-		if (!obs->pointcloud) failInput(path, "'" + opt.lidar_label + "' observation at t=" + secs(t) + " has no point cloud");
-		stats.invalid_points += fromPointsMap(*obs->pointcloud, f.scan);
-		rig.has_lidar = true;
-		rig.vehicle_T_lidar = toIsometry(obs->sensorPose);
+		ScanReading scan = readScanObservation(*obs, path + ": '" + opt.lidar_label + "' at t=" + secs(t));
+		stats.invalid_points += scan.dropped;
 		if (!f.has_image) f.t = t;
+		if (scan.points.has_time && t != f.t)  // point times are relative to the frame's time
+			for (auto& p : scan.points) p.time += static_cast<float>(t - f.t);
+		f.scan = std::move(scan.points);
+		mrpt::poses::CPose3D sensor_pose;
+		obs->getSensorPose(sensor_pose);
+		rig.has_lidar = true;
+		rig.vehicle_T_lidar = toIsometry(sensor_pose);
 		f.has_scan = true;
 	}
 

@@ -1,6 +1,7 @@
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
 #include <vlo/io/frame_observations.h>
+#include <vlo/io/lidar_observations.h>
 #include <vlo/io/rawlog_writer.h>
 
 #include <mrpt/io/CFileGZOutputStream.h>

@@ -2,12 +2,14 @@
 #include "io_test_util.h"
 
 #include <vlo/io/frame_observations.h>
+#include <vlo/io/lidar_observations.h>
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/io/rawlog_writer.h>
 
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 using namespace vlo;
 using namespace vlo::test;
@@ -150,7 +152,7 @@ TEST(RawlogErrors, MissingExternalImage)
 	expectInputError([&] { readFrames(dir + "/x.rawlog"); }, {dir + "/x_Images/CAMERA_000001.png", "cannot read image"});
 }
 
-TEST(RawlogErrors, WrongObservationClassOrDistortedCamera)
+TEST(RawlogErrors, WrongObservationClassOrBadDistortion)
 {
 	const std::string dir = freshDir();
 	{
@@ -162,10 +164,11 @@ TEST(RawlogErrors, WrongObservationClassOrDistortedCamera)
 	{
 		RawlogWriter w(dir + "/dist.rawlog", false);
 		auto obs = toImageObservation(testFrame(0, 0.0), "CAMERA");
-		obs->cameraParams.dist[0] = -0.3;
+		obs->cameraParams.distortion = mrpt::img::DistortionModel::plumb_bob;
+		obs->cameraParams.dist[0] = std::numeric_limits<double>::quiet_NaN();
 		w.write(*obs);
 		w.write(*toScanObservation(testFrame(0, 0.0), "LIDAR"));
 		w.commit();
 	}
-	expectInputError([&] { readFrames(dir + "/dist.rawlog"); }, {"lens distortion"});
+	expectInputError([&] { readFrames(dir + "/dist.rawlog"); }, {dir + "/dist.rawlog", "distortion coefficient"});
 }

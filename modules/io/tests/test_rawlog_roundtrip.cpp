@@ -2,6 +2,7 @@
 #include "io_test_util.h"
 
 #include <vlo/io/frame_observations.h>
+#include <vlo/io/lidar_observations.h>
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/io/rawlog_writer.h>
 

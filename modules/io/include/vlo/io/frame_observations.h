@@ -1,12 +1,11 @@
 #pragma once
 // Conversion between vlo's Frame/SensorRig and MRPT observations, following DESIGN.md:
-// CObservationImage::cameraPose = optical frame in the vehicle frame, cameraParams = rectified
-// pinhole without distortion; CObservationPointCloud (CPointsMapXYZI) with sensorPose = LiDAR in vehicle.
+// CObservationImage::cameraPose = optical frame in the vehicle frame, cameraParams = intrinsics with the
+// lens distortion; scans (see lidar_observations.h) with sensorPose = LiDAR in vehicle.
 #include <vlo/core/frame.h>
 
 #include <mrpt/img/TCamera.h>
 #include <mrpt/obs/CObservationImage.h>
-#include <mrpt/obs/CObservationPointCloud.h>
 
 #include <cstddef>
 #include <string>
@@ -20,16 +19,11 @@ double toSeconds(const mrpt::Clock::time_point& t);
 
 /// Image observation of frame.image with the rig's camera (image kept inline).
 mrpt::obs::CObservationImage::Ptr toImageObservation(const Frame& frame, const std::string& label);
-/// Point-cloud observation of frame.scan with the rig's LiDAR pose.
-mrpt::obs::CObservationPointCloud::Ptr toScanObservation(const Frame& frame, const std::string& label);
 
 mrpt::img::TCamera toTCamera(const PinholeCamera& cam);
-/// Throws InputError(where, ...) when the camera has lens distortion or invalid intrinsics.
+/// Throws InputError(where, ...) for invalid intrinsics, a non-finite distortion coefficient or an
+/// unknown distortion model.
 PinholeCamera fromTCamera(const mrpt::img::TCamera& params, const std::string& where);
-
-/// Copies the points with finite x, y, z (intensity 0 when the map has none) into `out`;
-/// returns how many were dropped.
-std::size_t fromPointsMap(const mrpt::maps::CPointsMap& map, PointCloud& out);
 
 /// Grayscale version of an image (no copy when it already is).
 mrpt::img::CImage toGray(const mrpt::img::CImage& img);

@@ -48,10 +48,12 @@ Eigen::Isometry3d nominalCam0TVehicle();
 struct KittiOdometryCalib
 {
 	Matrix34d P0 = Matrix34d::Zero();
+	int camera = 0;  ///< which rectified camera P is (0, 1 grey; 2, 3 colour)
+	Matrix34d P = Matrix34d::Zero();  ///< P<camera>: K [I | t] with t the offset from camera 0
 	bool has_tr = false;
 	Eigen::Isometry3d cam0_T_velo = Eigen::Isometry3d::Identity();  ///< Tr, or nominal if missing
 };
-KittiOdometryCalib readKittiOdometryCalib(const std::string& calib_txt);
+KittiOdometryCalib readKittiOdometryCalib(const std::string& calib_txt, int camera = 0);
 
 struct KittiRawCalib
 {

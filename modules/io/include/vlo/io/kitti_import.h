@@ -21,6 +21,7 @@ struct KittiOdometryImport
 	std::string seq;  ///< "06"
 	std::string out;  ///< X.rawlog; ground truth goes to X.gt.tum
 	long first = 0, last = -1;  ///< frame range, inclusive; last < 0: to the end
+	int camera = 0;  ///< image_<camera> with P<camera>: 0 grey, 2 colour (stored grayscale)
 	std::string camera_label = "CAMERA", lidar_label = "LIDAR";
 };
 ImportSummary importKittiOdometry(const KittiOdometryImport& opt);

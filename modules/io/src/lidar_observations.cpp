@@ -13,6 +13,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 
 namespace vlo
 {
@@ -44,29 +45,50 @@ CObservation::Ptr toVelodyneObservation(const Frame& frame)
 	{
 		pc.x.push_back(p.x), pc.y.push_back(p.y), pc.z.push_back(p.z);
 		pc.intensity.push_back(static_cast<uint8_t>(std::clamp(std::lround(p.intensity), 0L, 255L)));
-		if (scan.has_time) pc.timestamp.push_back(mrpt::system::timestampAdd(t0, p.time));
+		if (scan.has_time) pc.timestamp.push_back(t0 + mrpt::Clock::duration(std::llround(p.time * 1e7)));  // 100 ns ticks
 		if (scan.has_ring) pc.laser_id.push_back(static_cast<int16_t>(p.ring));
 	}
 	obs->sensorPose = toCPose3D(frame.rig.vehicle_T_lidar);
 	return obs;
 }
 
-// Default calibration of a Velodyne model from the product id in its data packets (0 = not told).
-const VelodyneCalibration& defaultCalibration(const CObservationVelodyneScan& obs, const std::string& where)
+// Velodyne models by the product id in their data packets, with their default calibration's name.
+struct VelodyneModel
 {
-	const uint8_t id = obs.scan_packets.front().velodyne_model_ID;
-	const char* model = id == 0x22 ? "VLP16" : id == 0x21 ? "HDL32" : nullptr;
+	const char* calibration;
+	std::size_t lasers;
+};
+std::optional<VelodyneModel> modelOf(const CObservationVelodyneScan& obs)
+{
+	switch (obs.scan_packets.front().velodyne_model_ID)
+	{
+		case 0x21: return VelodyneModel{"HDL32", 32};
+		case 0x22: return VelodyneModel{"VLP16", 16};
+		default: return std::nullopt;
+	}
+}
+
+/// The calibration the observation carries, unless it is missing or contradicts the packets' model
+/// (MRPT 2.5.8's rawlog-grabber stores VLP-16's for HDL-32 captures): then the model's default.
+void chooseCalibration(CObservationVelodyneScan& obs, const std::string& where, ScanReading& r)
+{
+	const auto model = modelOf(obs);
+	const std::size_t carried = obs.calibration.laser_corrections.size();
+	if (carried > 0 && (!model || carried == model->lasers)) return;
 	if (!model)
-		failInput(where, "Velodyne scan without calibration and of unknown model (packet product id " + std::to_string(id) +
+		failInput(where, "Velodyne scan without calibration and of unknown model (packet product id " +
+				std::to_string(obs.scan_packets.front().velodyne_model_ID) +
 				"; known: 0x21 HDL-32E, 0x22 VLP-16): record it with its calibration");
-	return VelodyneCalibration::LoadDefaultCalibration(model);
+	obs.calibration = VelodyneCalibration::LoadDefaultCalibration(model->calibration);
+	r.default_calibration = true;
 }
 
 ScanReading fromVelodyne(CObservationVelodyneScan& obs, const std::string& where)
 {
+	ScanReading r;
 	if (obs.point_cloud.size() == 0 && !obs.scan_packets.empty())
 	{
-		if (obs.calibration.empty()) obs.calibration = defaultCalibration(obs, where);
+		chooseCalibration(obs, where, r);
 		CObservationVelodyneScan::TGeneratePointCloudParameters params;
 		params.generatePerPointTimestamp = true;
 		params.minDistance = static_cast<float>(obs.minRange);
@@ -76,7 +98,6 @@ ScanReading fromVelodyne(CObservationVelodyneScan& obs, const std::string& where
 	const std::size_t n = pc.size();
 	if (pc.y.size() != n || pc.z.size() != n || (!pc.intensity.empty() && pc.intensity.size() != n))
 		failInput(where, "CObservationVelodyneScan with point fields of different lengths");
-	ScanReading r;
 	r.points.has_time = pc.timestamp.size() == n && n > 0;
 	r.points.has_ring = pc.laser_id.size() == n && n > 0;
 	r.points.reserve(n);

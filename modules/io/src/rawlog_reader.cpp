@@ -132,6 +132,7 @@ struct RawlogReader::Impl
 		scan_t.pop_front();
 		ScanReading scan = readScanObservation(*obs, path + ": '" + opt.lidar_label + "' at t=" + secs(t));
 		stats.invalid_points += scan.dropped;
+		stats.default_calibrations += scan.default_calibration;
 		if (!f.has_image) f.t = t;
 		if (scan.points.has_time && t != f.t)  // point times are relative to the frame's time
 			for (auto& p : scan.points) p.time += static_cast<float>(t - f.t);
@@ -221,6 +222,7 @@ std::string RawlogReader::statsSummary() const
 	o << s.frames << " frames from " << s.observations << " observations; " << s.unpaired_images << " images and "
 	  << s.unpaired_scans << " scans without partner; " << s.other_labels << " with other labels; "
 	  << s.invalid_points << " invalid points dropped";
+	if (s.default_calibrations > 0) o << "; " << s.default_calibrations << " Velodyne scans decoded with the model's default calibration";
 	return o.str();
 }
 }  // namespace vlo

@@ -160,3 +160,46 @@ TEST(KittiRawImport, RealSampleCamera2MatchesTheCalibrationProjection)
 		expectInputError([&] { readFrames(cut); }, {cut, "truncated"});
 	}
 }
+
+TEST(KittiOdometryImport, ColourCamera2OfEverySnippetMatchesP2TimesTr)
+{
+	const std::string root = sharedData("kitti_odometry_snippets"), dir = freshDir();
+	for (const std::string seq : {"00", "04", "06", "08"})
+	{
+		KittiOdometryImport opt;
+		opt.root = root;
+		opt.seq = seq;
+		opt.camera = 2;
+		opt.out = dir + "/" + seq + ".rawlog";
+		const auto summary = importKittiOdometry(opt);
+		EXPECT_EQ(summary.frames, 10u);
+		EXPECT_EQ(summary.scans, 10u);
+		EXPECT_EQ(rawlogEditInfo(opt.out), 0);
+		const auto calib = readKittiOdometryCalib(root + "/sequences/" + seq + "/calib.txt", 2);
+		// The reference projection of a Velodyne point into image_2: P2 * Tr.
+		Eigen::Matrix4d Tr = Eigen::Matrix4d::Identity();
+		Tr.topRows<3>() = calib.cam0_T_velo.matrix().topRows<3>();
+		const Matrix34d P = calib.P * Tr;
+		const auto frames = readFrames(opt.out);
+		ASSERT_EQ(frames.size(), 10u);
+		const Frame& f = frames[5];
+		EXPECT_FALSE(f.image.isColor());
+		EXPECT_EQ(f.rig.camera.fx, calib.P(0, 0));
+		const Eigen::Isometry3d cam_T_lidar = f.rig.camera_T_lidar();
+		double max_err = 0;
+		std::size_t inside = 0;
+		for (const auto& p : f.scan)
+		{
+			const Eigen::Vector3d X(p.x, p.y, p.z);
+			const Eigen::Vector3d a = f.rig.camera.K() * (cam_T_lidar * X), b = P * X.homogeneous();
+			if (b.z() < 1) continue;
+			const Eigen::Vector2d pb = b.hnormalized();
+			if (pb.x() < 0 || pb.y() < 0 || pb.x() >= f.rig.camera.width || pb.y() >= f.rig.camera.height) continue;
+			++inside;
+			max_err = std::max(max_err, (a.hnormalized() - pb).cwiseAbs().maxCoeff());
+		}
+		EXPECT_GT(inside, f.scan.size() / 20) << seq;
+		EXPECT_LT(max_err, 1e-6) << seq;  // camera 2 is 6 cm from camera 0: ~4 px at 10 m
+		std::cout << seq << ": " << inside << " points in image_2, max difference " << max_err << " px\n";
+	}
+}

@@ -2,8 +2,9 @@
 // LiDAR scans as MRPT observations. vlo writes a scan without per-point time or ring as a
 // CObservationPointCloud (CPointsMapXYZI) and one with them as a CObservationVelodyneScan whose
 // point_cloud is filled (MRPT 2.5's only class with per-point time and laser id; it keeps intensity
-// as 8 bits, so intensities are rounded into 0..255 there). It reads both, a CObservationPointCloud of
-// any points map, and raw Velodyne packets (decoded with MRPT's generatePointCloud).
+// as 8 bits and point times to 1 us, so intensities are rounded into 0..255 there). It reads both, a CObservationPointCloud of
+// any points map, and raw Velodyne packets (decoded with MRPT's generatePointCloud, with the calibration
+// the observation carries, or MRPT's default for the model the packets name: VLP-16 or HDL-32E).
 #include <vlo/core/frame.h>
 
 #include <mrpt/obs/CObservation.h>
@@ -21,6 +22,8 @@ struct ScanReading
 {
 	PointCloud points;
 	std::size_t dropped = 0;  ///< points with a non-finite coordinate
+	/// Velodyne packets decoded with the model's default calibration (none carried, or a wrong one).
+	bool default_calibration = false;
 };
 
 /// True for the classes readScanObservation reads.

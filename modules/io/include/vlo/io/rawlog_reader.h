@@ -29,6 +29,7 @@ struct RawlogStats
 	std::size_t unpaired_images = 0, unpaired_scans = 0;  ///< dropped for lack of a partner
 	std::size_t other_labels = 0;  ///< observations with neither label
 	std::size_t invalid_points = 0;  ///< NaN/inf LiDAR points removed
+	std::size_t default_calibrations = 0;  ///< Velodyne scans decoded with their model's default calibration
 	std::map<std::string, std::size_t> labels;  ///< observations per sensor label
 };
 

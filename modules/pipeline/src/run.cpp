@@ -2,6 +2,7 @@
 #include <vlo/core/progress.h>
 #include <vlo/core/stopwatch.h>
 #include <vlo/io/rawlog_reader.h>
+#include <vlo/io/undistort.h>
 #include <vlo/io/trajectory.h>
 #include <vlo/pipeline/frame_table.h>
 #include <vlo/pipeline/global_map.h>
@@ -65,6 +66,7 @@ RunSummary runPipeline(const RunRequest& req)
 	std::optional<MetricVoPath> metricVo;
 	Frame frame, prev;
 	bool hasPrev = false;
+	ImageUndistorter undistorter;  // the estimators and snapshots see ideal pinhole images
 	while ((popt.max_frames == 0 || outputs.table.rows() < std::size_t(popt.max_frames)) && reader.next(frame))
 	{
 		auto& table = outputs.table;
@@ -72,6 +74,7 @@ RunSummary runPipeline(const RunRequest& req)
 		table.set("frame", static_cast<long long>(frame.index));
 		table.set("t", frame.t, 6);
 		const auto t0 = SteadyClock::now();
+		if (visual) undistorter.apply(frame);
 		std::optional<Eigen::Isometry3d> guess;  // LOAM's initial guess of the vehicle motion
 		if (visual)
 		{

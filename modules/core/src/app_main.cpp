@@ -1,5 +1,6 @@
 #include <vlo/core/app_main.h>
 #include <vlo/core/error.h>
+#include <vlo/core/interrupt.h>
 
 #include <iostream>
 
@@ -7,9 +8,15 @@ namespace vlo
 {
 int runApp(const std::string& app, const std::function<int()>& body)
 {
+	installInterruptHandler();
 	try
 	{
 		return body();
+	}
+	catch (const Interrupted&)
+	{
+		std::cerr << app << ": interrupted: the outputs it was writing are removed" << std::endl;
+		return 130;
 	}
 	catch (const InputError& e)
 	{

@@ -1,3 +1,4 @@
+#include <vlo/core/interrupt.h>
 #include <vlo/core/progress.h>
 
 #include <unistd.h>
@@ -27,6 +28,7 @@ ProgressLine::~ProgressLine() { finish(); }
 
 void ProgressLine::update(std::size_t done, double fraction)
 {
+	throwIfInterrupted();  // every long loop reports progress: the place to stop it
 	done_ = done;
 	if (!enabled()) return;
 	const auto now = std::chrono::steady_clock::now();

@@ -14,6 +14,7 @@ class ProgressLine
 	ProgressLine(std::string label, std::size_t total);
 	~ProgressLine();
 	/// `fraction` in [0, 1] of the whole job when the total count is unknown (e.g. bytes read).
+	/// Throws Interrupted after Ctrl-C (interrupt.h).
 	void update(std::size_t done, double fraction = -1);
 	void finish();
 	static void setEnabled(bool on);  ///< force on/off (tests, --quiet)

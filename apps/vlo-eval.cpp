@@ -72,6 +72,7 @@ int run(int argc, char** argv)
 	const Trajectory gt = readTum(opts.gt_name);
 	const Trajectory est = readTum(opts.est_name);
 	const EvalReport report = evaluate(gt, est, opts);
+	for (const auto& w : report.warnings) std::cerr << "vlo-eval: warning: " << w << "\n";
 	std::cout << formatTable(report);
 	if (cl.has("json")) writeJson(cl.get("json"), report);
 	if (cl.has("write-aligned"))

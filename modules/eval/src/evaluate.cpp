@@ -1,6 +1,8 @@
 #include <vlo/core/error.h>
 #include <vlo/eval/evaluate.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <sstream>
 
@@ -75,6 +77,52 @@ EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptio
 			r.kitti_note = s.str();
 		}
 	}
+	r.warnings = plausibilityWarnings(r);
 	return r;
+}
+
+namespace
+{
+/// Positions along a line (a straight drive): an alignment's rotation about that line is then
+/// arbitrary, and so is the ARE.
+bool collinear(const Trajectory& tr)
+{
+	Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+	for (const auto& p : tr) mean += p.pose.translation();
+	mean /= double(tr.size());
+	Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+	for (const auto& p : tr) cov += (p.pose.translation() - mean) * (p.pose.translation() - mean).transpose();
+	const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvalues();  // increasing
+	return ev(1) < 1e-2 * ev(2);
+}
+}  // namespace
+
+std::vector<std::string> plausibilityWarnings(const EvalReport& r)
+{
+	std::vector<std::string> w;
+	const Association& a = r.association;
+	const std::string suffix = ": is " + r.options.gt_name + " the ground truth of this drive?";
+	std::ostringstream s;
+	s.precision(3);
+	if (2 * a.matched() < a.n_est)
+	{
+		s << "only " << a.matched() << " of " << a.n_est << " estimated poses fall within the ground truth's time span" << suffix;
+		w.push_back(s.str());
+		s.str("");
+	}
+	if (r.ate && r.ate->are_rmse_deg && *r.ate->are_rmse_deg > 30 && !collinear(a.gt))
+	{
+		s << "the rotation error after alignment is " << *r.ate->are_rmse_deg << " deg RMS" << suffix;
+		w.push_back(s.str());
+		s.str("");
+	}
+	const bool scaled = r.options.align == Alignment::Sim3;
+	if (!scaled && r.gt_length_m > 1 && (r.est_length_m > 2 * r.gt_length_m || 2 * r.est_length_m < r.gt_length_m))
+	{
+		s << "the estimate's path is " << r.est_length_m << " m against " << r.gt_length_m
+		  << " m of ground truth over the same times (an unscaled monocular VO needs --align sim3)" << suffix;
+		w.push_back(s.str());
+	}
+	return w;
 }
 }  // namespace vlo

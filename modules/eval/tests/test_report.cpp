@@ -156,3 +156,27 @@ TEST(CameraFrame, ParsesTwelveNumbersAndKittiCalib)
 	std::remove(calib.c_str());
 	EXPECT_THROW(readKittiCalibTr("no-such-calib.txt"), InputError);
 }
+
+TEST(Evaluate, GroundTruthOfAnotherDriveIsWarnedAbout)
+{
+	const Trajectory gt = fromSteps(200, arcStep(1.0, 0.02));
+	EXPECT_TRUE(evaluate(gt, gt, kDefaults).warnings.empty());
+	EXPECT_TRUE(evaluate(gt, scaled(gt, 1.3), kDefaults).warnings.empty());  // a poor estimate is no warning
+
+	const auto warned = [&](const Trajectory& est, const EvalOptions& o, const std::string& text) {
+		const auto w = evaluate(gt, est, o).warnings;
+		ASSERT_EQ(w.size(), 1u) << text;
+		EXPECT_NE(w[0].find(text), std::string::npos) << w[0];
+		EXPECT_NE(w[0].find("ground truth of this drive"), std::string::npos) << w[0];
+	};
+	Trajectory late = gt;  // three quarters after the ground truth ends
+	for (auto& p : late) p.t += 15.0;
+	warned(late, kDefaults, "50 of 200 estimated poses");
+	Trajectory other = fromSteps(200, arcStep(1.0, -0.03));  // another drive: turning the other way, same times
+	for (auto& p : other) p.pose.linear() = Rz(M_PI * 0.9) * p.pose.linear();
+	warned(other, kDefaults, "rotation error");
+	warned(scaled(gt, 0.1), kDefaults, "--align sim3");  // an unscaled VO against SE(3) alignment
+	EvalOptions sim3 = kDefaults;
+	sim3.align = Alignment::Sim3;
+	EXPECT_TRUE(evaluate(gt, scaled(gt, 0.1), sim3).warnings.empty());
+}

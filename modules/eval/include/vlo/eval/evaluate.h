@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace vlo
 {
@@ -40,8 +41,14 @@ struct EvalReport
 	std::string kitti_frame;  ///< "camera 0" or "as given"
 	std::optional<RpeResult> rpe;
 	std::string rpe_note;  ///< why the RPE is missing, if it is
+	/// Signs that the ground truth is of another drive (little time overlap, a rotation error of tens of
+	/// degrees, a path of another length): one line each, for the user.
+	std::vector<std::string> warnings;
 };
 
 /// Throws InputError (naming the files in opts) when fewer than 3 poses overlap in time.
 EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptions& opts);
+
+/// The warnings of a report (evaluate() fills EvalReport::warnings with them).
+std::vector<std::string> plausibilityWarnings(const EvalReport& r);
 }  // namespace vlo

@@ -4,6 +4,7 @@ set -euo pipefail
 PKGS=(build-essential cmake pkg-config xz-utils
       libmrpt-dev mrpt-apps libopencv-dev libceres-dev libpcl-dev libeigen3-dev
       libgtest-dev libbenchmark-dev libgl-dev libegl-dev parallel
+      python3  # the e2e scripts read CSV with its csv module
       libegl-mesa0 libgl1-mesa-dri)  # headless rendering (EGL + llvmpipe) for the simulator and snapshots
 missing=()
 for p in "${PKGS[@]}"; do

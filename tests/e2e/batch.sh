@@ -131,11 +131,11 @@ if [ -f "$VLO_DATA/kitti_gt_poses.tar.xz" ]; then
 	grep -qF -- "--ini $VLO_SRC/ini/vo-kitti.ini" shipped/paper-table.jobs || fail "paper-table.ini: vo_mono without its INI"
 	echo "ok: shipped plans: 28 and 60 jobs, 7 and 6 drives"
 else
-	echo "SKIP: $VLO_DATA/kitti_gt_poses.tar.xz not found: shipped plans not checked"
+	skip "$VLO_DATA/kitti_gt_poses.tar.xz not found: shipped plans not checked"
 fi
 
 if ! command -v parallel > /dev/null; then
-	echo "SKIP: GNU parallel is not installed (scripts/install-deps.sh installs it): emitted jobs not run"
+	skip "GNU parallel is not installed (scripts/install-deps.sh installs it): emitted jobs not run"
 else
 	parallel --will-cite -j2 < jobs.txt
 	[ $? -eq 1 ] || fail "parallel: expected exactly one failed job"

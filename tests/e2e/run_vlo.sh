@@ -40,6 +40,11 @@ valid=$(jv vlo/summary.json scale_valid)
 echo "scale estimates valid: $valid"
 below 20 "$valid" || fail "fewer than 20 valid scale estimates"
 
+# Rows whose vo_reason holds a comma keep their later columns: every lo_prior is one of LOAM's sources.
+grep -q '"initialised (.*,' vlo/frames.csv || fail "no quoted vo_reason with a comma in frames.csv"
+[ "$(column vlo/frames.csv lo_prior | grep -cvxE 'none|constant_velocity|external')" -eq 0 ] ||
+	fail "lo_prior holds something else than a prior source (columns shifted?)"
+
 # LOAM's guess per frame: the VO's metric motion when there is one, constant velocity otherwise.
 paste -d' ' <(column vlo/frames.csv frame) <(column vlo/frames.csv vo_metric_motion) <(column vlo/frames.csv lo_prior) > prior.txt
 awk '$1 >= 30 && $1 < 36 && $3 != "constant_velocity" { bad++ } END { exit bad > 0 }' prior.txt ||

@@ -93,7 +93,7 @@ if [ -x "$VLO_BIN/vlo-sim" ]; then
 	expect_png out/c/frame_2.png 1241 440   # 376 image rows + 64-row legend panel
 	expect_bad "frame beyond the end" "has only 3 frames" --rawlog sim.rawlog --frame 7
 else
-	echo "skip: $VLO_BIN/vlo-sim not built, no rawlog frame checked"
+	skip "$VLO_BIN/vlo-sim not built, no rawlog frame checked"
 fi
 
 finish snapshot_app

@@ -42,7 +42,9 @@ fs::path kittiScans()
 TEST(KittiRaw, RunsToTheEndWithoutJumps)
 {
 	const fs::path scans = kittiScans();
-	if (!fs::exists(scans / "0000000000.bin")) GTEST_SKIP() << "no KITTI raw sample in " VLO_SHARED_DATA;
+	if (!fs::exists(scans / "0000000000.bin"))
+		GTEST_SKIP() << "real-data test not run: no kitti_raw_2011_09_26_sample.tar.xz in " VLO_SHARED_DATA
+					 << " (CI has ../shared/data beside the checkout)";
 	LidarOdometry lo(hdl64Options());
 	Eigen::Isometry3d prev = Eigen::Isometry3d::Identity();
 	double length = 0, max_step = 0;

@@ -160,7 +160,11 @@ TEST(ScaleCorrector, DiagnosticsAddUp)
 		const auto& p = densePair().scan[k.scan_index];
 		EXPECT_NEAR(k.d, (densePair().rig.camera_T_lidar() * Eigen::Vector3d(p.x, p.y, p.z)).z(), 1e-4);
 	}
-	EXPECT_GT(e.ms.total, 0);
+	// The pair reaches the end with keypoints at every stage; the cap holds; the ratio is the counts'.
+	EXPECT_TRUE(e.valid);
+	EXPECT_GT(c.inliers, 0);
+	EXPECT_LE(c.selected, ScaleOptions{}.max_keypoints);
+	EXPECT_NEAR(e.inlier_ratio, double(c.inliers) / c.triangulated, 1e-12);
 	EXPECT_GE(e.ms.total, e.ms.project + e.ms.select + e.ms.track + e.ms.cull + e.ms.triangulate + e.ms.ransac - 1e-6);
 }
 

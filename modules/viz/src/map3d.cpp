@@ -4,8 +4,8 @@
 
 #include "canvas.h"
 #include "gl_render.h"
+#include "map3d_view.h"
 #include "path_height.h"
-#include "view_fit.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -65,9 +65,15 @@ void drawPath(cv::Mat& img, const ViewCamera& cam, const Trajectory& t, Rgb c, i
 	cv::rectangle(img, cv::Rect(e.x - 7, e.y - 7, 15, 15), canvas::bgr(c), cv::FILLED);
 	cv::rectangle(img, cv::Rect(e.x - 7, e.y - 7, 15, 15), canvas::kInk, 1);
 }
+
+cv::Rect contentRect(const Map3DStyle& style)
+{
+	const int top = style.title.empty() ? 10 : 50;
+	return {20, top, style.width - 40, style.height - top - kPanel - 10};
+}
 }  // namespace
 
-cv::Mat drawMap3D(const PointCloud& map, const std::vector<NamedTrajectory>& trajs, const Trajectory* gt,
+ViewCamera map3DView(const PointCloud& map, const std::vector<NamedTrajectory>& trajs, const Trajectory* gt,
 	const Map3DStyle& style)
 {
 	std::vector<const Trajectory*> all;
@@ -75,12 +81,16 @@ cv::Mat drawMap3D(const PointCloud& map, const std::vector<NamedTrajectory>& tra
 	for (const auto& t : trajs) all.push_back(&t.traj);
 	const auto frame = framingPoints(map, all);
 	if (frame.empty()) failInput("3D map view", "nothing to draw (empty map and trajectories)");
-
-	const int top = style.title.empty() ? 10 : 50;
-	const cv::Rect content(20, top, style.width - 40, style.height - top - kPanel - 10);
 	const double az = std::isfinite(style.azimuth_deg) ? style.azimuth_deg * M_PI / 180 : acrossAzimuth(frame);
-	const ViewCamera cam = fitView(frame, az, style.elevation_deg * M_PI / 180, style.fov_deg * M_PI / 180, content,
+	return fitView(frame, az, style.elevation_deg * M_PI / 180, style.fov_deg * M_PI / 180, contentRect(style),
 		style.width, style.height);
+}
+
+cv::Mat drawMap3D(const PointCloud& map, const std::vector<NamedTrajectory>& trajs, const Trajectory* gt,
+	const Map3DStyle& style)
+{
+	const ViewCamera cam = map3DView(map, trajs, gt, style);
+	const cv::Rect content = contentRect(style);
 
 	PointCloud shown;
 	const size_t cap = std::max<size_t>(1, style.max_points);

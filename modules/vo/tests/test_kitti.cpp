@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 TEST(Kitti, Sequence06SampleWithinSim3Bound)
 {
 	const std::string archive = VLO_SHARED_DATA "/kitti_odometry_06_0000-0050.tar.xz";
-	if (!fs::exists(archive)) GTEST_SKIP() << archive << " not found";
+	if (!fs::exists(archive))
+		GTEST_SKIP() << "real-data test not run: " << archive << " not found (CI has ../shared/data beside the checkout)";
 	const fs::path dir = fs::temp_directory_path() / ("vlo_test_vo_kitti06_" + std::to_string(::getpid()));
 	fs::remove_all(dir);
 	fs::create_directories(dir);

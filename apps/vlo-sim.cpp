@@ -20,6 +20,8 @@ int main(int argc, char** argv)
 				{"trajectory", "POSES.txt", "drive along KITTI camera-0 poses instead of a generated drive"},
 				{"kitti-dir", "DIR", "also write the KITTI odometry layout (sequence 00) to DIR"},
 				{"lidar-distortion", "", "each LiDAR firing at its own time over the 0.1 s sweep"},
+				{"camera-distortion", "K1,K2,P1,P2[,K3]", "render through a plumb_bob lens with these coefficients"},
+				{"fisheye", "", "with --camera-distortion K1,K2,K3,K4: an equidistant (fisheye) lens instead"},
 				{"no-noise", "", "no image noise, range noise or dropouts (for checks)"},
 				{"foliage-depth", "M", "mean depth of LiDAR returns inside tree crowns and bushes (default 0: solid hulls)"},
 				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
@@ -41,6 +43,11 @@ int main(int argc, char** argv)
 		cfg.seed = static_cast<uint64_t>(seed);
 		cfg.kitti_poses = cl.get("trajectory");
 		cfg.lidar_distortion = cl.has("lidar-distortion");
+		if (cl.has("fisheye") && !cl.has("camera-distortion")) vlo::failInput("--fisheye", "needs --camera-distortion K1,K2,K3,K4");
+		if (cl.has("camera-distortion"))
+			vlo::sim::setLens(cfg.rig.camera, cl.get("camera-distortion"), cl.has("fisheye"));
+		if (cfg.rig.camera.distorted() && cl.has("kitti-dir"))
+			vlo::failInput("--kitti-dir", "KITTI's images are rectified: not with --camera-distortion");
 		if (cl.has("no-noise")) cfg.range_noise = cfg.image_noise = cfg.dropout = 0;
 		cfg.foliage_depth = cl.getDouble("foliage-depth", 0);
 		if (!(cfg.foliage_depth >= 0 && cfg.foliage_depth <= 10)) vlo::failInput("--foliage-depth", "must be between 0 and 10 m");

@@ -1,29 +1,91 @@
 #include <vlo/sim/camera_sim.h>
 #include <vlo/sim/rng.h>
 
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core/eigen.hpp>
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <cmath>
 
 namespace vlo::sim
 {
-CameraSim::CameraSim(const PinholeCamera& K, double zfar) : K_(K), zfar_(zfar) {}
+struct CameraSim::Lens
+{
+	PinholeCamera canvas;  // the pinhole picture rendered: K_ widened to every ray the lens sees
+	cv::Mat map_x, map_y;  // CV_32F, output size: where each distorted pixel looks in the canvas
+};
+
+CameraSim::CameraSim(const PinholeCamera& K, double zfar) : K_(K), zfar_(zfar)
+{
+	if (!K.distorted()) return;
+	// Each output pixel's ray through the lens, as a pixel of the pinhole camera with the same K.
+	std::vector<cv::Point2f> px;
+	px.reserve(static_cast<std::size_t>(K.width) * K.height);
+	for (int r = 0; r < K.height; ++r)
+		for (int c = 0; c < K.width; ++c) px.emplace_back(float(c), float(r));
+	cv::Mat Km;
+	cv::eigen2cv(K.K(), Km);
+	std::vector<cv::Point2f> rays;
+	const auto& d = K.dist;
+	if (K.distortion == mrpt::img::DistortionModel::kannala_brandt)
+		cv::fisheye::undistortPoints(px, rays, Km, cv::Vec4d(d[0], d[1], d[4], d[5]));
+	else
+		cv::undistortPoints(px, rays, Km, std::vector<double>(d.begin(), d.end()), cv::noArray(), cv::noArray(),
+			cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 50, 1e-9));
+	// A real lens sees wider than its pinhole crop: render a canvas that holds every ray (at most one
+	// image size more on each side; rays beyond see black).
+	double x0 = 0, x1 = K.width - 1, y0 = 0, y1 = K.height - 1;
+	for (auto& p : rays)
+	{
+		p = cv::Point2f(float(K.fx * p.x + K.cx), float(K.fy * p.y + K.cy));
+		if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+		x0 = std::min<double>(x0, p.x), x1 = std::max<double>(x1, p.x);
+		y0 = std::min<double>(y0, p.y), y1 = std::max<double>(y1, p.y);
+	}
+	const auto margin = [](double out, int size) { return int(std::ceil(std::min(out, double(size)))) + 1; };
+	const int left = margin(-x0, K.width), right = margin(x1 - (K.width - 1), K.width);
+	const int top = margin(-y0, K.height), bottom = margin(y1 - (K.height - 1), K.height);
+	lens_ = std::make_unique<Lens>();
+	lens_->canvas = K;
+	lens_->canvas.distortion = mrpt::img::DistortionModel::none;
+	lens_->canvas.dist.fill(0.0);
+	lens_->canvas.cx += left, lens_->canvas.cy += top;
+	lens_->canvas.width += left + right, lens_->canvas.height += top + bottom;
+	lens_->map_x.create(K.height, K.width, CV_32F);
+	lens_->map_y.create(K.height, K.width, CV_32F);
+	for (int r = 0, i = 0; r < K.height; ++r)
+		for (int c = 0; c < K.width; ++c, ++i)
+		{
+			lens_->map_x.at<float>(r, c) = rays[i].x + left;
+			lens_->map_y.at<float>(r, c) = rays[i].y + top;
+		}
+}
+
+CameraSim::~CameraSim() = default;
+
+const PinholeCamera& CameraSim::pinhole() const { return lens_ ? lens_->canvas : K_; }
+
+std::pair<int, int> CameraSim::tileSize() const { return {2 * pinhole().width, 2 * pinhole().height}; }
 
 View CameraSim::view(const Eigen::Isometry3d& world_T_cam) const
 {
 	// Output pixel c covers supersampled pixels 2c and 2c+1, whose centres are at 2c and 2c+1 in the
 	// supersampled image: output coordinate u maps to 2u + 0.5.
+	const PinholeCamera& K = pinhole();
 	View v;
 	v.world_T_cam = world_T_cam;
-	v.K = K_;
-	v.K.fx = 2 * K_.fx, v.K.fy = 2 * K_.fy;
-	v.K.cx = 2 * K_.cx + 0.5, v.K.cy = 2 * K_.cy + 0.5;
-	v.K.width = 2 * K_.width, v.K.height = 2 * K_.height;
+	v.K = K;
+	v.K.fx = 2 * K.fx, v.K.fy = 2 * K.fy;
+	v.K.cx = 2 * K.cx + 0.5, v.K.cy = 2 * K.cy + 0.5;
+	v.K.width = 2 * K.width, v.K.height = 2 * K.height;
 	v.znear = 1.0, v.zfar = zfar_;
 	return v;
 }
 
 mrpt::img::CImage CameraSim::image(const RenderedView& t, double sigma, Rng& rng) const
 {
+	if (lens_) return distortedImage(t, sigma, rng);
 	mrpt::img::CImage img(K_.width, K_.height, mrpt::img::CH_GRAY);
 	for (int r = 0; r < K_.height; ++r)
 	{
@@ -34,6 +96,31 @@ mrpt::img::CImage CameraSim::image(const RenderedView& t, double sigma, Rng& rng
 		{
 			const double mean = (a[2 * c] + a[2 * c + 1] + b[2 * c] + b[2 * c + 1]) / 4.0;
 			const double v = mean + (sigma > 0 ? sigma * rng.normal() : 0.0);
+			out[c] = static_cast<uint8_t>(std::clamp(std::lround(v), 0L, 255L));
+		}
+	}
+	return img;
+}
+
+mrpt::img::CImage CameraSim::distortedImage(const RenderedView& t, double sigma, Rng& rng) const
+{
+	const PinholeCamera& K = lens_->canvas;
+	cv::Mat pinhole(K.height, K.width, CV_32F);
+	for (int r = 0; r < K.height; ++r)
+	{
+		const uint8_t* a = &t.gray[static_cast<std::size_t>(2 * r) * t.width];
+		const uint8_t* b = a + t.width;
+		for (int c = 0; c < K.width; ++c) pinhole.at<float>(r, c) = (a[2 * c] + a[2 * c + 1] + b[2 * c] + b[2 * c + 1]) / 4.0f;
+	}
+	cv::Mat warped;  // rays leaving the pinhole picture see black, as beyond a real lens's field
+	cv::remap(pinhole, warped, lens_->map_x, lens_->map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+	mrpt::img::CImage img(K_.width, K_.height, mrpt::img::CH_GRAY);
+	for (int r = 0; r < K_.height; ++r)
+	{
+		auto* out = img.ptrLine<uint8_t>(r);
+		for (int c = 0; c < K_.width; ++c)
+		{
+			const double v = warped.at<float>(r, c) + (sigma > 0 ? sigma * rng.normal() : 0.0);
 			out[c] = static_cast<uint8_t>(std::clamp(std::lround(v), 0L, 255L));
 		}
 	}

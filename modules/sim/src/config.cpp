@@ -1,7 +1,11 @@
 #include <vlo/core/error.h>
 #include <vlo/sim/config.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <vector>
 
 namespace vlo::sim
 {
@@ -76,5 +80,29 @@ SensorRig defaultRig()
 	rig.vehicle_T_lidar.linear() = rot(-0.7 * deg, 0.3 * deg, 0.2 * deg);
 	rig.vehicle_T_lidar.translation() = Eigen::Vector3d(0.80, 0.0, 1.73);
 	return rig;
+}
+void setLens(PinholeCamera& camera, const std::string& coefficients, bool fisheye)
+{
+	const std::string where = "--camera-distortion " + coefficients;
+	std::vector<double> k;
+	std::stringstream in(coefficients);
+	for (std::string item; std::getline(in, item, ',');)
+	{
+		char* end = nullptr;
+		const double v = std::strtod(item.c_str(), &end);
+		if (item.empty() || *end != '\0' || !std::isfinite(v) || std::abs(v) > 10) failInput(where, "'" + item + "' is not a coefficient");
+		k.push_back(v);
+	}
+	camera.dist.fill(0.0);
+	if (fisheye)
+	{
+		if (k.size() != 4) failInput(where, "a fisheye (equidistant) lens takes 4 coefficients K1,K2,K3,K4");
+		camera.distortion = mrpt::img::DistortionModel::kannala_brandt;
+		camera.dist[0] = k[0], camera.dist[1] = k[1], camera.dist[4] = k[2], camera.dist[5] = k[3];
+		return;
+	}
+	if (k.size() != 4 && k.size() != 5) failInput(where, "a plumb_bob lens takes 4 or 5 coefficients K1,K2,P1,P2[,K3]");
+	camera.distortion = mrpt::img::DistortionModel::plumb_bob;
+	std::copy(k.begin(), k.end(), camera.dist.begin());
 }
 }  // namespace vlo::sim

@@ -1,9 +1,12 @@
 #pragma once
 // The camera: rendered at twice the resolution and averaged 2x2 (anti-aliasing edges and textures,
-// which MRPT draws without mipmaps), then mild Gaussian noise.
+// which MRPT draws without mipmaps), then, for a camera with lens distortion, warped through the lens
+// (the pinhole picture sampled where each distorted pixel looks), then mild Gaussian noise.
 #include <vlo/sim/renderer.h>
 
 #include <mrpt/img/CImage.h>
+
+#include <memory>
 
 namespace vlo::sim
 {
@@ -12,17 +15,25 @@ class Rng;
 class CameraSim
 {
    public:
+	/// `K` may carry a lens distortion (plumb_bob or kannala_brandt): the images come out distorted.
 	explicit CameraSim(const PinholeCamera& K, double zfar = 160.0);
-	std::pair<int, int> tileSize() const { return {2 * K_.width, 2 * K_.height}; }
+	~CameraSim();
+	std::pair<int, int> tileSize() const;
 	/// The supersampled view for a camera (optical frame) pose in the world.
 	View view(const Eigen::Isometry3d& world_T_cam) const;
 	/// Output image from the rendered tile: 2x2 mean, plus noise of `sigma` gray levels.
 	mrpt::img::CImage image(const RenderedView& tile, double sigma, Rng& rng) const;
-	/// Rendered z-depth at output pixel coordinates (u, v) (OpenCV convention), 0 if none.
+	/// Rendered z-depth at output pixel coordinates (u, v) (OpenCV convention) of a camera without
+	/// distortion, 0 if none.
 	static float depthAt(const RenderedView& tile, double u, double v);
 
    private:
+	mrpt::img::CImage distortedImage(const RenderedView& tile, double sigma, Rng& rng) const;
+	const PinholeCamera& pinhole() const;  ///< the camera rendered (K_, widened for a lens)
+
 	PinholeCamera K_;
 	double zfar_;
+	struct Lens;  // remap tables from distorted output pixels to pinhole pixels
+	std::unique_ptr<Lens> lens_;
 };
 }  // namespace vlo::sim

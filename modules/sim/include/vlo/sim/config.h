@@ -37,6 +37,10 @@ LidarModel lidarByName(const std::string& name);
 /// lever arm and a small rotation.
 SensorRig defaultRig();
 
+/// Sets the camera's lens from "K1,K2,P1,P2[,K3]" (plumb_bob) or, with `fisheye`, "K1,K2,K3,K4"
+/// (kannala_brandt = equidistant). InputError naming --camera-distortion on a malformed list.
+void setLens(PinholeCamera& camera, const std::string& coefficients, bool fisheye);
+
 struct SimConfig
 {
 	Scenario scenario = Scenario::Urban;

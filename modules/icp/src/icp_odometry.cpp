@@ -76,7 +76,9 @@ IcpResult IcpOdometry::process(double t, const PointCloud& scan, const std::opti
 	{
 		RegistrationParams params;
 		params.max_distance = 3.0 * r.sigma;
-		params.kernel = r.sigma / 3.0;
+		// The paper's Geman-McClure rho(e) = (e^2 / 2) / (kappa + e^2) with kappa = sigma / 3 compares kappa
+		// with a squared distance: in terms of a length scale k (gemanMcClureWeight), k^2 = sigma / 3.
+		params.kernel = std::sqrt(r.sigma / 3.0);
 		params.max_iterations = opt_.max_iterations;
 		params.convergence = opt_.convergence;
 		r.registration = alignToMap(source, map_, predicted, params);

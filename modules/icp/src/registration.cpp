@@ -30,7 +30,7 @@ Step buildSystem(const Points& moved, const VoxelMap& map, const RegistrationPar
 	double d2 = 0;
 	for (const auto& p : moved)
 	{
-		if (!map.nearest(p, q, d2) || d2 >= gate2) continue;
+		if (!map.nearest(p, q, d2, gate2)) continue;
 		const Eigen::Vector3d r = p - q;
 		J.rightCols<3>() = -skew(p);
 		const double w = gemanMcClureWeight(d2, params.kernel);

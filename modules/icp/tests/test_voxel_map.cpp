@@ -49,6 +49,11 @@ TEST(VoxelMap, NearestSearchesTheNeighbouringVoxelsOnly)
 	EXPECT_TRUE(q.isApprox(Eigen::Vector3d(0.9, 0.5, 0.5)));
 	EXPECT_NEAR(d2, 0.15 * 0.15, 1e-12);
 	EXPECT_FALSE(map.nearest({4.5, 0.5, 0.5}, q, d2));  // two voxels away from both
+	EXPECT_FALSE(map.nearest({1.05, 0.5, 0.5}, q, d2, 0.1 * 0.1));  // beyond the gate
+	// A closer point in a neighbour voxel wins over one in the query's own voxel.
+	map.addPoints({{1.9, 0.5, 0.5}});
+	ASSERT_TRUE(map.nearest({2.05, 0.5, 0.5}, q, d2));
+	EXPECT_TRUE(q.isApprox(Eigen::Vector3d(1.9, 0.5, 0.5)));
 }
 
 TEST(Preprocessing, CropAndDownsample)

@@ -17,7 +17,7 @@ class AdaptiveThreshold
 	/// Point displacement bound of a pose deviation [m].
 	double modelError(const Eigen::Isometry3d& deviation) const;
 	void addDeviation(const Eigen::Isometry3d& deviation);
-	/// The current sigma [m]: correspondences are searched within 3 sigma, the kernel scale is sigma / 3.
+	/// The current sigma [m]: correspondences are searched within 3 sigma (IcpOdometry sets the kernel).
 	double sigma() const;
 	std::size_t samples() const { return samples_; }
 

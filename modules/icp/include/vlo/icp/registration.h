@@ -11,7 +11,7 @@ namespace vlo::icp
 struct RegistrationParams
 {
 	double max_distance = 6.0;  ///< correspondence gate [m] (3 sigma)
-	double kernel = 0.67;  ///< Geman-McClure scale [m] (sigma / 3)
+	double kernel = 0.8;  ///< Geman-McClure scale k [m]: residuals of k weigh 1/4
 	int max_iterations = 500;
 	double convergence = 1e-4;  ///< norm of the 6-vector update that ends the iterations
 	std::size_t min_correspondences = 6;  ///< fewer: stop where we are

@@ -5,6 +5,7 @@
 #include <vlo/icp/voxel.h>
 
 #include <Eigen/Geometry>
+#include <limits>
 #include <unordered_map>
 
 namespace vlo::icp
@@ -20,8 +21,10 @@ class VoxelMap
 	/// Drops every voxel whose first point is `radius` or more from `origin`.
 	void removeFarFrom(const Eigen::Vector3d& origin);
 
-	/// The map point closest to `q` among the 27 voxels around it; false when they are empty.
-	bool nearest(const Eigen::Vector3d& q, Eigen::Vector3d& closest, double& distance2) const;
+	/// The map point closest to `q` among the 27 voxels around it and closer than sqrt(max_distance2);
+	/// false when there is none.
+	bool nearest(const Eigen::Vector3d& q, Eigen::Vector3d& closest, double& distance2,
+		double max_distance2 = std::numeric_limits<double>::infinity()) const;
 
 	bool empty() const { return voxels_.empty(); }
 	std::size_t voxelCount() const { return voxels_.size(); }

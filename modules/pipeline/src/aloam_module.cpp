@@ -65,6 +65,7 @@ Registry<LidarOdometryModule>& lidarOdometryRegistry()
 	static Registry<LidarOdometryModule> registry = [] {
 		Registry<LidarOdometryModule> r;
 		r.add("aloam", [] { return std::make_unique<AloamModule>(); });
+		r.add("icp", makeIcpModule);
 		return r;
 	}();
 	return registry;

@@ -25,4 +25,6 @@ class LidarOdometryModule
 };
 
 Registry<LidarOdometryModule>& lidarOdometryRegistry();
+/// KISS-ICP's method (modules/icp), registered as "icp".
+std::unique_ptr<LidarOdometryModule> makeIcpModule();
 }  // namespace vlo

@@ -1,0 +1,96 @@
+// Milliseconds per frame of KISS-ICP's method (modules/icp) beside A-LOAM (modules/loam) on the same
+// synthetic HDL-64E (~125k points) and VLP-16 (~26k points) scans of an urban street, one thread
+// (CPU time is the figure to read on a busy machine).
+//   build/bin/bench_icp [--benchmark_filter=Hdl64]
+// Counters of the ICP rows: wall milliseconds of its stages (preprocess = deskew, crop, two voxel
+// downsamplings; registration; map update), averaged over the frames run.
+#include <benchmark/benchmark.h>
+#include <vlo/icp/icp_odometry.h>
+#include <vlo/loam/lidar_odometry.h>
+
+#include <map>
+#include <memory>
+
+#include "synthetic_world.h"
+#include "test_helpers.h"
+
+using namespace vlo;
+using namespace vlo::loam::test;
+
+namespace
+{
+constexpr int kFrames = 20;
+
+// Scans are ray cast once per sensor and shared by both methods.
+const std::vector<PointCloud>& scans(bool hdl)
+{
+	static std::map<bool, std::vector<PointCloud>> cache;
+	auto& s = cache[hdl];
+	if (s.empty())
+	{
+		Path path;
+		path.add(15, 0.0);
+		path.add(40, 1.0 / 35);
+		const World world = urbanWorld(path, 3);
+		LidarModel m = hdl ? hdl64() : vlp16();
+		m.noise_sigma = 0.01;
+		std::mt19937 rng(5);
+		for (int i = 0; i < kFrames; ++i) s.push_back(scan(world, m, lidarPoseAt(path, 1.0 * i), &rng));
+	}
+	return s;
+}
+
+/// Runs `process(i)` on frames 0..kFrames-1 over and over, rebuilding the odometry between rounds.
+template <class Odometry, class MakeOdometry, class Process>
+void runFrames(benchmark::State& state, MakeOdometry make, Process process)
+{
+	std::unique_ptr<Odometry> odo = make();
+	int i = 0;
+	for (auto _ : state)
+	{
+		if (i == kFrames)
+		{
+			state.PauseTiming();
+			odo = make();
+			i = 0;
+			state.ResumeTiming();
+		}
+		process(*odo, i++);
+	}
+}
+
+void BM_IcpFrame(benchmark::State& state, bool hdl)
+{
+	const auto& s = scans(hdl);
+	double pre = 0, reg = 0, upd = 0, iterations = 0;
+	int n = 0;
+	runFrames<icp::IcpOdometry>(
+		state, [] { return std::make_unique<icp::IcpOdometry>(icp::IcpOptions{}); },
+		[&](icp::IcpOdometry& odo, int i) {
+			const icp::IcpResult r = odo.process(0.1 * i, s[i], std::nullopt);
+			pre += r.ms_preprocess;
+			reg += r.ms_registration;
+			upd += r.ms_map_update;
+			iterations += r.registration.iterations;
+			++n;
+		});
+	state.counters["ms_preprocess"] = pre / n;
+	state.counters["ms_registration"] = reg / n;
+	state.counters["ms_map_update"] = upd / n;
+	state.counters["iterations"] = iterations / n;
+}
+
+void BM_AloamFrame(benchmark::State& state, bool hdl)
+{
+	const auto& s = scans(hdl);
+	runFrames<loam::LidarOdometry>(
+		state, [hdl] { return std::make_unique<loam::LidarOdometry>(hdl ? hdl64Options() : vlp16Options()); },
+		[&](loam::LidarOdometry& lo, int i) { benchmark::DoNotOptimize(lo.process(0.1 * i, s[i], std::nullopt)); });
+}
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_IcpFrame, Hdl64, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_AloamFrame, Hdl64, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_IcpFrame, Vlp16, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_AloamFrame, Vlp16, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_MAIN();

@@ -1,0 +1,57 @@
+// KISS-ICP's method (modules/icp) behind the pipeline's LidarOdometryModule interface.
+#include <vlo/icp/icp_odometry.h>
+#include <vlo/pipeline/lidar_odometry_module.h>
+
+namespace vlo
+{
+namespace
+{
+class IcpModule : public LidarOdometryModule
+{
+   public:
+	void configure(RunConfig& config) override
+	{
+		config.load(opt_, "icp");
+		odometry_ = std::make_unique<icp::IcpOdometry>(opt_);  // validates the options
+		// One sensor INI serves both LiDAR methods as it serves every mode: A-LOAM's sections (and the
+		// pipeline's own [loam.prior] default in mode vlo) are read and checked, not run.
+		lidarOdometryRegistry().create("aloam", "icp")->configure(config);
+	}
+
+	Eigen::Isometry3d process(
+		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	{
+		if (!rig_set_) vehicle_T_lidar_ = frame.rig.vehicle_T_lidar;
+		rig_set_ = true;
+		// A motion of the vehicle seen from the LiDAR: L = Tvl^-1 * V * Tvl.
+		std::optional<Eigen::Isometry3d> lidar_motion;
+		if (vehicle_motion) lidar_motion = vehicle_T_lidar_.inverse() * *vehicle_motion * vehicle_T_lidar_;
+		const auto r = odometry_->process(frame.t, frame.scan, lidar_motion);
+
+		table.set("lo_status", std::string(icp::toString(r.status)));
+		table.set("lo_prior", r.prediction);
+		table.set("lo_points", static_cast<long long>(r.n_valid));
+		table.set("lo_icp_source", static_cast<long long>(r.n_source));
+		table.set("lo_icp_deskew", std::string(icp::toString(r.deskew)));
+		table.set("lo_map_iterations", static_cast<long long>(r.registration.iterations));
+		table.set("lo_map_rms_m", r.registration.rms, 4);
+		table.set("lo_map_matches", static_cast<long long>(r.registration.correspondences));
+		table.set("lo_icp_sigma_m", r.sigma, 4);
+		table.set("lo_icp_model_error_m", r.model_error, 4);
+		table.set("lo_map_points", static_cast<long long>(r.map_points));
+		table.set("ms_lo_features", r.ms_preprocess, 2);
+		table.set("ms_lo_mapping", r.ms_registration + r.ms_map_update, 2);
+		table.set("lo_reason", r.reason);
+		return vehicle_T_lidar_ * r.pose * vehicle_T_lidar_.inverse();
+	}
+
+   private:
+	icp::IcpOptions opt_;
+	std::unique_ptr<icp::IcpOdometry> odometry_;
+	Eigen::Isometry3d vehicle_T_lidar_ = Eigen::Isometry3d::Identity();
+	bool rig_set_ = false;
+};
+}  // namespace
+
+std::unique_ptr<LidarOdometryModule> makeIcpModule() { return std::make_unique<IcpModule>(); }
+}  // namespace vlo

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# A lens-distorted camera (vlo-sim --camera-distortion, plumb_bob and --fisheye) on the same simulated
+# drive as an ideal one: the rawlog carries the lens, vlo-run undistorts, and the full system's error
+# and the scale-corrected VO's ATE stay within 10 % (+ a small absolute floor) of the ideal camera's.
+set -u
+BIN="${VLO_BIN:?}"
+INI="${VLO_SRC:?}/ini"
+. "$VLO_SRC/tests/e2e/lib/common.sh"
+
+# drive NAME [vlo-sim lens options]: simulates, runs mode vlo, prints "t_err vo_ate"
+drive() {
+	local name=$1
+	shift
+	"$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames 80 --seed 4 --out "$name.rawlog" --quiet "$@" ||
+		{ fail "$name: vlo-sim failed"; return; }
+	"$BIN/vlo-run" --rawlog "$name.rawlog" --ini "$INI/sim-hdl64.ini" --out "out_$name" --quiet > /dev/null ||
+		{ fail "$name: vlo-run failed"; return; }
+	"$BIN/vlo-eval" --gt "$name.gt.tum" --est "out_$name/trajectory_vlo.tum" --kitti-lengths 10,20,40 --json "$name.json" > /dev/null
+	"$BIN/vlo-eval" --gt "$name.gt.tum" --est "out_$name/trajectory_vo.tum" --json "${name}_vo.json" > /dev/null
+	echo "$(jv "$name.json" kitti_t_err_pct) $(jv "${name}_vo.json" ate_rmse_m)"
+}
+within() { awk -v a="$1" -v b="$2" -v floor="$3" 'BEGIN { exit !(a <= 1.1 * b + floor) }'; }
+
+read -r t0 a0 <<< "$(drive ideal)"
+echo "ideal: t_err $t0 %, scale-corrected VO ATE $a0 m"
+for lens in "plumb_bob --camera-distortion=-0.3,0.1,0.0005,-0.0005" "fisheye --camera-distortion=0.02,-0.01,0.003,-0.001 --fisheye"; do
+	name=${lens%% *}
+	read -r t a <<< "$(drive "$name" ${lens#* })"
+	echo "$name: t_err $t %, scale-corrected VO ATE $a m"
+	within "$t" "$t0" 0.005 || fail "$name: t_err $t % not within 10 % of the ideal camera's $t0 %"
+	within "$a" "$a0" 0.01 || fail "$name: VO ATE $a m not within 10 % of the ideal camera's $a0 m"
+done
+rawlog-edit --info -i plumb_bob.rawlog | grep -Eq "CAMERA +/ +80 " || fail "rawlog-edit cannot read the distorted rawlog"
+"$BIN/vlo-sim" --frames 2 --camera-distortion 0.1,0.2 --out bad.rawlog --quiet 2> bad.err && fail "2 coefficients accepted"
+grep -q "4 or 5 coefficients" bad.err || fail "bad lens: $(cat bad.err)"
+finish distorted_camera

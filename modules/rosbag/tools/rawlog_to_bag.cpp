@@ -15,7 +15,9 @@ int main(int argc, char** argv)
 			{{"rawlog", "FILE.rawlog", "input", true}, {"out", "FILE.bag", "output bag", true},
 				{"gt", "FILE.tum", "ground truth written as nav_msgs/Odometry on /ground_truth"},
 				{"encoding", "E", "mono8 (default) rgb8 bgr8 rgba8 bgra8 mono16 png jpeg"},
-				{"no-tf", "", "write no transforms"}, {"tf-dynamic", "", "transforms on /tf every frame, not /tf_static"}});
+				{"no-tf", "", "write no transforms"}, {"tf-dynamic", "", "transforms on /tf every frame, not /tf_static"},
+				{"distortion-model", "M", "CameraInfo distortion_model to write (broken-input tests)"},
+				{"drop-x", "", "PointCloud2 without its x field (broken-input tests)"}});
 		if (cl.helpRequested())
 		{
 			std::cout << cl.usage("Usage: vlo-test-rawlog-to-bag --rawlog IN.rawlog --out OUT.bag [options]");
@@ -25,6 +27,8 @@ int main(int argc, char** argv)
 		layout.image_encoding = cl.get("encoding", layout.image_encoding);
 		layout.tf_static = !cl.has("no-tf");
 		layout.tf_as_dynamic = cl.has("tf-dynamic");
+		layout.distortion_model = cl.get("distortion-model");
+		layout.drop_x = cl.has("drop-x");
 		std::vector<vlo::Frame> frames;
 		vlo::RawlogReader reader(cl.get("rawlog"));
 		for (vlo::Frame f; reader.next(f);) frames.push_back(f);

@@ -31,18 +31,11 @@ for mode in lo vlo; do
 	echo "ok: $mode trajectory identical"
 done
 
-# expect_bad NAME TEXT ARGS...: exit code 2, one stderr line with TEXT, no output
+# expect_bad NAME TEXT ARGS...: exit code 2, one stderr line with TEXT, nothing written
 expect_bad() {
 	local name=$1 text=$2
 	shift 2
-	rm -rf bad && mkdir bad
-	"$BIN/vlo-import" rosbag "$@" --out bad/x.rawlog > /dev/null 2> err.txt
-	local rc=$?
-	[ $rc -eq 2 ] || fail "$name: exit code $rc"
-	[ "$(wc -l < err.txt)" -eq 1 ] || fail "$name: stderr is not one line: $(cat err.txt)"
-	grep -qF -- "$text" err.txt || fail "$name: stderr lacks '$text': $(cat err.txt)"
-	[ -z "$(ls -A bad)" ] || fail "$name: output left: $(ls -A bad)"
-	echo "ok: $name: $(cat err.txt)"
+	expect_exit2 "$name" "$text" bad "$BIN/vlo-import" rosbag "$@" --out bad/x.rawlog
 }
 TOPICS=(--lidar-topic /velodyne_points --image-topic /camera/image_raw)
 head -c 3000000 sim.bag > cut.bag

@@ -94,6 +94,7 @@ int rosbag(int argc, char** argv)
 			{"lidar-topic", "TOPIC", "sensor_msgs/PointCloud2 topic"},
 			{"image-topic", "TOPIC", "sensor_msgs/Image or sensor_msgs/CompressedImage topic"},
 			{"camera-info-topic", "TOPIC", "sensor_msgs/CameraInfo (default: .../camera_info next to the image topic)"},
+			{"camera-info", "FILE.yaml", "camera calibration file (ROS camera_calibration format) for bags without CameraInfo"},
 			{"extrinsics", "FILE.yaml", "lidar_T_camera: [16 numbers], row-major (default: from /tf_static, /tf)"},
 			{"gt-topic", "TOPIC", "nav_msgs/Odometry, geometry_msgs/PoseStamped or PointStamped -> FILE.gt.tum"},
 			{"vehicle-frame", "FRAME", "tf frame to use as vehicle frame (default: the LiDAR's frame)"},
@@ -121,6 +122,7 @@ int rosbag(int argc, char** argv)
 	opt.lidar_topic = cl.get("lidar-topic");
 	opt.image_topic = cl.get("image-topic");
 	opt.camera_info_topic = cl.get("camera-info-topic");
+	opt.camera_info_file = cl.get("camera-info");
 	opt.extrinsics = cl.get("extrinsics");
 	opt.gt_topic = cl.get("gt-topic");
 	opt.vehicle_frame = cl.get("vehicle-frame");

@@ -18,6 +18,8 @@
 #include <sensor_msgs/CameraInfo.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include <boost/make_shared.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -52,8 +54,8 @@ std::string cameraInfoTopicFor(const BagSet& bags, const std::string& image_topi
 		tried += (tried.empty() ? "" : ", ") + candidate;
 		if (ns.empty()) break;
 	}
-	failInput("--camera-info-topic", "not given and no CameraInfo topic next to " + image_topic + " in " + bags.name() +
-			" (tried " + tried + ")");
+	failInput(bags.name(), "no CameraInfo topic next to " + image_topic + " (tried " + tried +
+			"): give --camera-info-topic TOPIC or --camera-info FILE.yaml");
 }
 
 /// The first message of a topic.
@@ -263,14 +265,24 @@ RosbagImportSummary importRosbag(const RosbagImport& opt)
 	summary.bag_bytes = bags.bytes();
 	bags.requireType(bags.topic(opt.lidar_topic, "--lidar-topic"), {kPointCloud2});
 	bags.requireType(bags.topic(opt.image_topic, "--image-topic"), {kImage, kCompressed});
-	const std::string info_topic = opt.camera_info_topic.empty() ? cameraInfoTopicFor(bags, opt.image_topic) : opt.camera_info_topic;
-	bags.requireType(bags.topic(info_topic, "--camera-info-topic"), {"sensor_msgs/CameraInfo"});
+	if (!opt.camera_info_topic.empty() && !opt.camera_info_file.empty())
+		failInput("command line", "give --camera-info-topic or --camera-info, not both");
 
 	// Everything that can fail before the first output byte: intrinsics, frames, extrinsics, ground truth.
-	const auto info = firstMessage<sensor_msgs::CameraInfo>(bags, info_topic);
+	boost::shared_ptr<sensor_msgs::CameraInfo> info;
+	std::string info_where = opt.camera_info_file;
+	if (!opt.camera_info_file.empty())
+		info = boost::make_shared<sensor_msgs::CameraInfo>(readCameraInfoFile(opt.camera_info_file));
+	else
+	{
+		const std::string topic = opt.camera_info_topic.empty() ? cameraInfoTopicFor(bags, opt.image_topic) : opt.camera_info_topic;
+		bags.requireType(bags.topic(topic, "--camera-info-topic"), {"sensor_msgs/CameraInfo"});
+		info = firstMessage<sensor_msgs::CameraInfo>(bags, topic);
+		info_where = bags.name() + ": " + topic;
+	}
 	SensorRig rig;
 	rig.has_camera = rig.has_lidar = true;
-	rig.camera = fromCameraInfo(*info, opt.image_topic, bags.name() + ": " + info_topic);
+	rig.camera = fromCameraInfo(*info, opt.image_topic, info_where);
 	const std::string lidar_frame = frameOfFirst(bags, opt.lidar_topic);
 	std::string camera_frame = frameOfFirst(bags, opt.image_topic);
 	if (camera_frame.empty()) camera_frame = info->header.frame_id;

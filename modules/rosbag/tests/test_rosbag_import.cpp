@@ -6,6 +6,7 @@
 #include <vlo/io/trajectory.h>
 
 #include <fstream>
+#include <iomanip>
 
 namespace vlo::test
 {
@@ -18,6 +19,16 @@ struct Case
 	std::array<double, 8> dist;
 	bool tf_static, tf_dynamic, big_endian;
 };
+
+/// lidar_T_camera as --extrinsics FILE.yaml holds it.
+void writeExtrinsicsFile(const std::string& path, const Eigen::Isometry3d& l_T_c)
+{
+	std::ofstream f(path);
+	f.precision(17);
+	f << "lidar_T_camera: [";
+	for (int i = 0; i < 16; ++i) f << (i ? ", " : "") << l_T_c.matrix()(i / 4, i % 4);
+	f << "]\n";
+}
 
 /// The frames as a driver would record them, with the case's camera model.
 std::vector<Frame> sourceFrames(const Case& c)
@@ -98,11 +109,7 @@ TEST_P(RosbagRoundTrip, ImportedRawlogHoldsWhatTheBagHeld)
 	if (!c.tf_static)  // the same extrinsics from a file, row-major
 	{
 		opt.extrinsics = dir + "/extrinsics.yaml";
-		std::ofstream f(opt.extrinsics);
-		f.precision(17);
-		f << "lidar_T_camera: [";
-		for (int i = 0; i < 16; ++i) f << (i ? ", " : "") << l_T_c.matrix()(i / 4, i % 4);
-		f << "]\n";
+		writeExtrinsicsFile(opt.extrinsics, l_T_c);
 	}
 	const auto summary = importRosbag(opt);
 	EXPECT_EQ(summary.images, src.size());
@@ -178,6 +185,37 @@ TEST(RosbagImport, SeveralBagsAreOneRecording)
 	const auto s = importRosbag(opt);
 	EXPECT_EQ(s.images, frames.size());
 	EXPECT_EQ(s.scans, frames.size());
+	expectSameFrames(frames, readFrames(opt.out), true);
+}
+TEST(RosbagImport, S3eLayoutWithCalibrationFiles)
+{
+	// S3E's bags: /Alpha/left_camera/compressed (JPEG), /Alpha/velodyne_points, no CameraInfo, no tf; the
+	// calibration comes in files (here: the simulated camera with S3E's Alpha plumb_bob coefficients).
+	const std::string dir = freshDir();
+	auto frames = simFrames();
+	for (auto& f : frames)
+	{
+		f.rig.camera.distortion = mrpt::img::DistortionModel::plumb_bob;
+		f.rig.camera.dist = {-0.052628389768906, 0.100832689624109, 0.000395112517197, 0.000362060505238, 0, 0, 0, 0};
+	}
+	BagLayout layout;
+	layout.image_encoding = "png";
+	layout.image_topic = "/Alpha/left_camera/compressed";
+	layout.lidar_topic = "/Alpha/velodyne_points";
+	layout.info_topic = "/unused/camera_info";
+	layout.tf_static = false;
+	writeBag(dir + "/s3e.bag", frames, {}, layout);
+	auto opt = importOptions(dir + "/s3e.bag", dir + "/out.rawlog", layout);
+	opt.extrinsics = dir + "/alpha_extrinsics.yaml";
+	writeExtrinsicsFile(opt.extrinsics, frames[0].rig.vehicle_T_lidar.inverse() * frames[0].rig.vehicle_T_camera);
+	opt.camera_info_file = dir + "/alpha_left.yaml";
+	const auto& c = frames[0].rig.camera;
+	std::ofstream(opt.camera_info_file) << std::setprecision(17) << "image_width: " << c.width << "\nimage_height: " << c.height
+										<< "\ncamera_name: alpha_left\ncamera_matrix: {rows: 3, cols: 3, data: [" << c.fx << ", 0, "
+										<< c.cx << ", 0, " << c.fy << ", " << c.cy << ", 0, 0, 1]}\ndistortion_model: plumb_bob\n"
+										<< "distortion_coefficients: {rows: 1, cols: 5, data: [" << c.dist[0] << ", " << c.dist[1]
+										<< ", " << c.dist[2] << ", " << c.dist[3] << ", 0.0]}\n";
+	importRosbag(opt);
 	expectSameFrames(frames, readFrames(opt.out), true);
 }
 }  // namespace

@@ -14,7 +14,7 @@ int main(int argc, char** argv)
 		const vlo::CommandLine cl(argc, argv, 1,
 			{{"rawlog", "FILE.rawlog", "input", true}, {"out", "FILE.bag", "output bag", true},
 				{"gt", "FILE.tum", "ground truth written as nav_msgs/Odometry on /ground_truth"},
-				{"encoding", "E", "mono8 (default) rgb8 bgr8 rgba8 bgra8 mono16 png jpeg"},
+				{"encoding", "E", "mono8 (default) rgb8 bgr8 rgba8 bgra8 mono16; png jpeg on /camera/image_raw/compressed"},
 				{"no-tf", "", "write no transforms"}, {"tf-dynamic", "", "transforms on /tf every frame, not /tf_static"},
 				{"distortion-model", "M", "CameraInfo distortion_model to write (broken-input tests)"},
 				{"drop-x", "", "PointCloud2 without its x field (broken-input tests)"}});
@@ -25,6 +25,7 @@ int main(int argc, char** argv)
 		}
 		vlo::test::BagLayout layout;
 		layout.image_encoding = cl.get("encoding", layout.image_encoding);
+		if (layout.image_encoding == "png" || layout.image_encoding == "jpeg") layout.image_topic += "/compressed";
 		layout.tf_static = !cl.has("no-tf");
 		layout.tf_as_dynamic = cl.has("tf-dynamic");
 		layout.distortion_model = cl.get("distortion-model");

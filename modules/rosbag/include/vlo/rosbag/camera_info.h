@@ -15,6 +15,11 @@ namespace vlo::rosbag_io
 /// length, binning or an ROI, or a K without focal lengths: InputError(where, ...).
 PinholeCamera fromCameraInfo(const sensor_msgs::CameraInfo& msg, const std::string& image_topic, const std::string& where);
 
+/// A camera calibration file as ROS's camera_calibration / camera_info_manager write it (image_width,
+/// image_height, camera_matrix, distortion_model, distortion_coefficients, projection_matrix; each matrix
+/// as {rows, cols, data}), for bags without a CameraInfo topic. Throws InputError naming the file.
+sensor_msgs::CameraInfo readCameraInfoFile(const std::string& path);
+
 /// True for the names of rectified image streams (".../image_rect", ".../image_rect_color/compressed").
 bool isRectifiedTopic(const std::string& image_topic);
 }  // namespace vlo::rosbag_io

@@ -12,6 +12,7 @@ struct RosbagImport
 	std::vector<std::string> bags;
 	std::string lidar_topic, image_topic;
 	std::string camera_info_topic;  ///< "" = the camera_info topic next to the image topic
+	std::string camera_info_file;  ///< camera calibration YAML instead of a topic (bags without CameraInfo)
 	std::string extrinsics;  ///< FILE.yaml; "" = from /tf_static (and static /tf)
 	std::string gt_topic;  ///< "" = no ground truth
 	std::string vehicle_frame;  ///< "" = the LiDAR frame

@@ -36,7 +36,7 @@ Eigen::Isometry3d readExtrinsicsFile(const std::string& path)
 	if ((R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1e-6 || R.determinant() < 0)
 		failInput(path, "lidar_T_camera: the rotation is not orthonormal");
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-	T.linear() = R;
+	T.linear() = Eigen::Quaterniond(R).normalized().toRotationMatrix();  // onto SO(3): files print ~15 digits
 	T.translation() = M.topRightCorner<3, 1>();
 	return T;
 }

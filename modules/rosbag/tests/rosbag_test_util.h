@@ -23,15 +23,6 @@ namespace vlo::test
 {
 namespace fs = std::filesystem;
 
-/// Top-down VLP-16 laser id of a point (+15 deg = 0 ... -15 deg = 15), as an Ouster-style driver numbers.
-inline std::uint16_t topDownRing(const LidarPoint& p)
-{
-	const double elev = std::atan2(p.z, std::hypot(p.x, p.y)) * 180 / M_PI;
-	return static_cast<std::uint16_t>(std::lround((15 - elev) / 2));
-}
-/// Capture time within the sweep from the azimuth (s from the stamp, -0.05 .. 0.05).
-inline float sweepTime(const LidarPoint& p) { return static_cast<float>(std::atan2(p.y, p.x) / (2 * M_PI) * 0.1); }
-
 /// Frames of an 8-frame noise-free VLP-16 drive (vlo-sim, run once per process), with ring and time.
 inline const std::vector<Frame>& simFrames(Trajectory* gt = nullptr)
 {
@@ -48,12 +39,7 @@ inline const std::vector<Frame>& simFrames(Trajectory* gt = nullptr)
 		for (Frame f; reader.next(f);)
 		{
 			f.image = mrpt::img::CImage(f.image.asCvMatRef().clone(), mrpt::img::SHALLOW_COPY);  // the files go below
-			for (auto& p : f.scan)
-			{
-				p.ring = topDownRing(p);
-				p.time = sweepTime(p);
-			}
-			f.scan.has_ring = f.scan.has_time = true;
+			addVlp16Fields(f.scan);
 			frames.push_back(f);
 		}
 		truth = readTum((dir / "sim.gt.tum").string());

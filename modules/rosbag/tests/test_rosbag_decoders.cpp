@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <vlo/core/error.h>
 #include <vlo/rosbag/camera_info.h>
+#include <vlo/rosbag/extrinsics_file.h>
 #include <vlo/rosbag/pointcloud2.h>
 #include <vlo/rosbag/stamp_order.h>
 #include <vlo/rosbag/transform_tree.h>
@@ -158,6 +159,29 @@ TEST(StampOrder, ReleasesInStampOrderWithinTheWindow)
 	order.flush();
 	const std::vector<std::pair<double, int>> want = {{0.0, 0}, {0.0, 1}, {0.1, 0}, {0.1, 1}, {0.2, 0}, {0.3, 0}, {0.4, 0}};
 	EXPECT_EQ(out, want);
+}
+}  // namespace
+}  // namespace vlo::rosbag_io
+
+namespace vlo::rosbag_io
+{
+namespace
+{
+TEST(CalibrationFiles, ShippedS3eExampleReads)
+{
+	const std::string dir = std::string(VLO_SOURCE_DIR) + "/doc/examples/";
+	const auto cam = fromCameraInfo(readCameraInfoFile(dir + "s3e_alpha_left_camera.yaml"), "/Alpha/left_camera/compressed", "x");
+	EXPECT_EQ(cam.width, 1224);
+	EXPECT_EQ(cam.height, 1024);
+	EXPECT_EQ(cam.fx, 1172.771733138536);
+	EXPECT_EQ(cam.cy, 507.672727295385);
+	EXPECT_EQ(cam.distortion, mrpt::img::DistortionModel::plumb_bob);
+	EXPECT_EQ(cam.dist[0], -0.052628389768906);
+	EXPECT_EQ(cam.dist[4], 0.0);
+	const Eigen::Isometry3d l_T_c = readExtrinsicsFile(dir + "s3e_alpha_extrinsics.yaml");
+	EXPECT_EQ(l_T_c.translation().y(), 0.196875730840019);
+	// The camera looks along the LiDAR's x axis (forward): its optical z axis in the LiDAR frame.
+	EXPECT_GT(l_T_c.linear().col(2).x(), 0.999);
 }
 }  // namespace
 }  // namespace vlo::rosbag_io

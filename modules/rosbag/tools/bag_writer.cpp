@@ -14,6 +14,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 
@@ -186,6 +187,17 @@ void writeGroundTruth(rosbag::Bag& bag, const StampedPose& p, const BagLayout& l
 	}
 }
 }  // namespace
+
+void addVlp16Fields(PointCloud& scan)
+{
+	for (auto& p : scan)
+	{
+		const double elev = std::atan2(p.z, std::hypot(p.x, p.y)) * 180 / M_PI;
+		p.ring = static_cast<std::uint16_t>(std::lround((15 - elev) / 2));
+		p.time = static_cast<float>(std::atan2(p.y, p.x) / (2 * M_PI) * 0.1);
+	}
+	scan.has_ring = scan.has_time = true;
+}
 
 void writeBag(const std::string& path, const std::vector<Frame>& frames, const Trajectory& gt, const BagLayout& l)
 {

@@ -26,6 +26,11 @@ struct BagLayout
 	double stamp_offset = 0;  ///< added to every frame time (ROS time 0 means "no time")
 };
 
+/// Adds what a VLP-16 driver gives to a simulated VLP-16 scan: ring = the top-down laser id of the point's
+/// elevation (+15 deg = 0 ... -15 deg = 15, as Ouster-style drivers number), time = from the azimuth
+/// (-0.05 .. 0.05 s around the stamp).
+void addVlp16Fields(PointCloud& scan);
+
 /// Writes the frames (each may have an image and a scan, at frame.t) and the ground truth (vehicle poses).
 void writeBag(const std::string& path, const std::vector<Frame>& frames, const Trajectory& gt, const BagLayout& layout);
 }  // namespace vlo::test

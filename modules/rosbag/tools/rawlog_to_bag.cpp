@@ -17,7 +17,8 @@ int main(int argc, char** argv)
 				{"encoding", "E", "mono8 (default) rgb8 bgr8 rgba8 bgra8 mono16; png jpeg on /camera/image_raw/compressed"},
 				{"no-tf", "", "write no transforms"}, {"tf-dynamic", "", "transforms on /tf every frame, not /tf_static"},
 				{"distortion-model", "M", "CameraInfo distortion_model to write (broken-input tests)"},
-				{"drop-x", "", "PointCloud2 without its x field (broken-input tests)"}});
+				{"drop-x", "", "PointCloud2 without its x field (broken-input tests)"},
+				{"vlp16-fields", "", "add VLP-16 driver fields ring (top-down) and time (from the azimuth)"}});
 		if (cl.helpRequested())
 		{
 			std::cout << cl.usage("Usage: vlo-test-rawlog-to-bag --rawlog IN.rawlog --out OUT.bag [options]");
@@ -32,7 +33,11 @@ int main(int argc, char** argv)
 		layout.drop_x = cl.has("drop-x");
 		std::vector<vlo::Frame> frames;
 		vlo::RawlogReader reader(cl.get("rawlog"));
-		for (vlo::Frame f; reader.next(f);) frames.push_back(f);
+		for (vlo::Frame f; reader.next(f);)
+		{
+			if (cl.has("vlp16-fields")) vlo::test::addVlp16Fields(f.scan);
+			frames.push_back(f);
+		}
 		const vlo::Trajectory gt = cl.has("gt") ? vlo::readTum(cl.get("gt")) : vlo::Trajectory{};
 		vlo::test::writeBag(cl.get("out"), frames, gt, layout);
 		return 0;

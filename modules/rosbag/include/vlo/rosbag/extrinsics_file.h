@@ -7,6 +7,7 @@
 namespace vlo::rosbag_io
 {
 /// Throws InputError naming the file when it is missing, lacks the key, has not 16 finite numbers, or
-/// the matrix is not a rigid transform (last row 0 0 0 1, rotation orthonormal within 1e-6).
+/// the matrix is not a rigid transform (last row 0 0 0 1, rotation orthonormal within 1e-6); the
+/// rotation is projected onto SO(3).
 Eigen::Isometry3d readExtrinsicsFile(const std::string& path);
 }  // namespace vlo::rosbag_io

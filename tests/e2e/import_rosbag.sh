@@ -53,4 +53,8 @@ expect_bad "distortion model" "fov.bag: /camera/camera_info: CameraInfo: unknown
 expect_bad "no extrinsics" "notf.bag: no transform between the LiDAR frame 'velodyne' and the camera frame 'camera_optical'" \
 	--bag notf.bag "${TOPICS[@]}"
 grep -qF -- "--extrinsics FILE.yaml" err.txt || fail "no extrinsics: the option is not named"
+
+# Repeated --bag: one recording (notf.bag holds the same 30 frames again, without tf).
+"$BIN/vlo-import" rosbag --bag sim.bag --bag notf.bag --list > list2.txt || fail "--list of two bags failed"
+grep -qE "^/velodyne_points +sensor_msgs/PointCloud2 +60 " list2.txt || fail "two bags: $(cat list2.txt)"
 finish import_rosbag

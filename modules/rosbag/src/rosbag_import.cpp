@@ -172,8 +172,10 @@ struct Placement
 Placement placeSensors(const BagSet& bags, const RosbagImport& opt, const std::string& lidar_frame, const std::string& camera_frame)
 {
 	Placement p;
-	std::vector<std::string> frames = {lidar_frame, camera_frame};
-	if (!opt.vehicle_frame.empty()) frames.insert(frames.begin(), opt.vehicle_frame);
+	// The frames tf must connect; /tf is read (a pass over the bag's chunks) only when /tf_static does not.
+	std::vector<std::string> frames = {lidar_frame};
+	if (opt.extrinsics.empty()) frames.push_back(camera_frame);
+	if (!opt.vehicle_frame.empty()) frames.push_back(opt.vehicle_frame);
 	p.tree = staticTransforms(bags, frames, p.source);
 	if (!opt.vehicle_frame.empty())
 	{

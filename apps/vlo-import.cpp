@@ -3,6 +3,7 @@
 #include <vlo/core/cli.h>
 #include <vlo/core/error.h>
 #include <vlo/io/kitti_import.h>
+#include <vlo/rosbag/rosbag_import.h>
 
 #include <cstdio>
 #include <iostream>
@@ -17,7 +18,8 @@ const char* kTopUsage =
 	"Converts a dataset into an MRPT rawlog for vlo (images as PNG in <name>_Images/).\n\n"
 	"Subcommands:\n"
 	"  kitti-odometry   KITTI odometry benchmark layout (sequences/NN, poses/NN.txt)\n"
-	"  kitti-raw        KITTI raw data layout (one drive, calibration of its date)\n\n"
+	"  kitti-raw        KITTI raw data layout (one drive, calibration of its date)\n"
+	"  rosbag           ROS 1 bags: PointCloud2 + Image/CompressedImage + CameraInfo (+ tf, ground truth)\n\n"
 	"Run 'vlo-import <subcommand> --help' for its options.\n";
 
 void report(const vlo::ImportSummary& s)
@@ -84,6 +86,59 @@ int kittiRaw(int argc, char** argv)
 	report(vlo::importKittiRaw(opt));
 	return 0;
 }
+int rosbag(int argc, char** argv)
+{
+	const vlo::CommandLine cl(argc, argv, 2,
+		{{"bag", "FILE.bag", "input bag (repeat for a recording split into several bags)", true, true},
+			{"list", "", "print every topic with its type, message count and rate, and stop"},
+			{"lidar-topic", "TOPIC", "sensor_msgs/PointCloud2 topic"},
+			{"image-topic", "TOPIC", "sensor_msgs/Image or sensor_msgs/CompressedImage topic"},
+			{"camera-info-topic", "TOPIC", "sensor_msgs/CameraInfo (default: .../camera_info next to the image topic)"},
+			{"camera-info", "FILE.yaml", "camera calibration file (ROS camera_calibration format) for bags without CameraInfo"},
+			{"extrinsics", "FILE.yaml", "lidar_T_camera: [16 numbers], row-major (default: from /tf_static, /tf)"},
+			{"gt-topic", "TOPIC", "nav_msgs/Odometry, geometry_msgs/PoseStamped or PointStamped -> FILE.gt.tum"},
+			{"vehicle-frame", "FRAME", "tf frame to use as vehicle frame (default: the LiDAR's frame)"},
+			{"reorder-window", "S", "seconds of header stamps held to sort messages (default 1)"},
+			{"out", "FILE.rawlog", "output rawlog"}, {"camera-label", "L", "sensor label of the images (default CAMERA)"},
+			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}});
+	if (cl.helpRequested())
+	{
+		std::cout << cl.usage(
+			"Usage: vlo-import rosbag --bag FILE.bag [--bag MORE.bag ...] --list\n"
+			"       vlo-import rosbag --bag FILE.bag [--bag ...] --lidar-topic TOPIC --image-topic TOPIC\n"
+			"                         [--camera-info-topic TOPIC] [--extrinsics FILE.yaml] [--gt-topic TOPIC] --out FILE.rawlog\n"
+			"Messages are written in header-stamp order with their own stamps; see doc/ROSBAG.md.");
+		return 0;
+	}
+	if (cl.has("list"))
+	{
+		vlo::listRosbagTopics(cl.getAll("bag"), std::cout);
+		return 0;
+	}
+	for (const char* required : {"lidar-topic", "image-topic", "out"})
+		if (!cl.has(required)) vlo::failInput("command line", std::string("missing required option '--") + required + "'");
+	vlo::RosbagImport opt;
+	opt.bags = cl.getAll("bag");
+	opt.lidar_topic = cl.get("lidar-topic");
+	opt.image_topic = cl.get("image-topic");
+	opt.camera_info_topic = cl.get("camera-info-topic");
+	opt.camera_info_file = cl.get("camera-info");
+	opt.extrinsics = cl.get("extrinsics");
+	opt.gt_topic = cl.get("gt-topic");
+	opt.vehicle_frame = cl.get("vehicle-frame");
+	opt.reorder_window = cl.getDouble("reorder-window", opt.reorder_window);
+	opt.out = cl.get("out");
+	opt.camera_label = cl.get("camera-label", opt.camera_label);
+	opt.lidar_label = cl.get("lidar-label", opt.lidar_label);
+	const auto s = vlo::importRosbag(opt);
+	for (const auto& w : s.warnings) std::cerr << kApp << ": warning: " << w << "\n";
+	const double mb = s.bag_bytes / 1e6;
+	std::printf("%s: %zu images, %zu scans (%zu non-finite points dropped), extrinsics from %s; %.1f MB of bags in %.1f s (%.1f MB/s)\n",
+		s.rawlog.c_str(), s.images, s.scans, s.dropped_points, s.extrinsics_source.c_str(), mb, s.seconds,
+		s.seconds > 0 ? mb / s.seconds : 0.0);
+	if (!s.ground_truth.empty()) std::printf("%s: %zu ground-truth poses, vehicle frame\n", s.ground_truth.c_str(), s.gt_poses);
+	return 0;
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -97,7 +152,8 @@ int main(int argc, char** argv)
 		}
 		if (sub == "kitti-odometry") return kittiOdometry(argc, argv);
 		if (sub == "kitti-raw") return kittiRaw(argc, argv);
-		vlo::failInput("command line", sub.empty() ? "missing subcommand (kitti-odometry or kitti-raw; see --help)"
+		if (sub == "rosbag") return rosbag(argc, argv);
+		vlo::failInput("command line", sub.empty() ? "missing subcommand (kitti-odometry, kitti-raw or rosbag; see --help)"
 												   : "unknown subcommand '" + sub + "' (see --help)");
 	});
 }

@@ -2,6 +2,7 @@
 # Installs vlo's Debian build and test dependencies when missing. Idempotent: quick when all present.
 set -euo pipefail
 PKGS=(build-essential cmake pkg-config xz-utils
+      librosbag-storage-dev pluginlib-dev libsensor-msgs-dev libgeometry-msgs-dev libnav-msgs-dev libtf2-msgs-dev  # ROS 1 bags (vlo-import rosbag)
       libmrpt-dev mrpt-apps libopencv-dev libceres-dev libpcl-dev libeigen3-dev
       libgtest-dev libbenchmark-dev libgl-dev libegl-dev parallel
       python3  # the e2e scripts read CSV with its csv module

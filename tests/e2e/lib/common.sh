@@ -36,3 +36,17 @@ finish() {
 	echo "$1: all passed"
 	exit 0
 }
+# expect_exit2 NAME TEXT OUTDIR CMD...: CMD exits with code 2 and one stderr line holding TEXT, and
+# leaves OUTDIR (created empty beforehand) empty. The stderr line stays in err.txt.
+expect_exit2() {
+	local name=$1 text=$2 out=$3
+	shift 3
+	rm -rf "$out" && mkdir -p "$out"
+	"$@" > /dev/null 2> err.txt
+	local rc=$?
+	[ $rc -eq 2 ] || fail "$name: exit code $rc, expected 2"
+	[ "$(wc -l < err.txt)" -eq 1 ] || fail "$name: stderr is not one line: $(cat err.txt)"
+	grep -qF -- "$text" err.txt || fail "$name: stderr lacks '$text': $(cat err.txt)"
+	[ -z "$(ls -A "$out")" ] || fail "$name: output left behind: $(ls -A "$out")"
+	echo "ok: $name: $(cat err.txt)"
+}

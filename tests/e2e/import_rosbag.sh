@@ -31,6 +31,14 @@ for mode in lo vlo; do
 	echo "ok: $mode trajectory identical"
 done
 
+# Per-point ring and time: the rawlog holds CObservationVelodyneScans, which MRPT's own tools read.
+"$BIN/vlo-test-rawlog-to-bag" --rawlog sim.rawlog --out rt.bag --vlp16-fields --encoding jpeg || fail "ring/time bag"
+"$BIN/vlo-import" rosbag --bag rt.bag --lidar-topic /velodyne_points --image-topic /camera/image_raw/compressed \
+	--vehicle-frame base_link --out rt.rawlog > /dev/null || fail "ring/time import failed"
+rawlog-edit --info -i rt.rawlog > rt.info 2>&1
+grep -Eq "LIDAR +/ +30 " rt.info && grep -Eq "CAMERA +/ +30 " rt.info || fail "rawlog-edit on ring/time import: $(cat rt.info)"
+"$BIN/vlo-run" --rawlog rt.rawlog --ini "$INI/vlp16.ini" --out rt_lo --quiet --set pipeline.mode=lo || fail "vlo-run on ring/time import"
+
 # expect_bad NAME TEXT ARGS...: exit code 2, one stderr line with TEXT, nothing written
 expect_bad() {
 	local name=$1 text=$2

@@ -1,17 +1,14 @@
+// The run loop, as the paper's figure: frame -> motion source -> LiDAR odometry -> outputs.
 #include <vlo/core/error.h>
 #include <vlo/core/progress.h>
 #include <vlo/core/stopwatch.h>
 #include <vlo/io/rawlog_reader.h>
-#include <vlo/io/trajectory.h>
-#include <vlo/pipeline/frame_table.h>
+#include <vlo/kernel/lidar_odometry.h>
+#include <vlo/kernel/motion_source.h>
 #include <vlo/pipeline/global_map.h>
-#include <vlo/pipeline/lidar_odometry_module.h>
 #include <vlo/pipeline/pipeline_options.h>
 #include <vlo/pipeline/run.h>
-#include <vlo/pipeline/metric_vo_path.h>
 #include <vlo/pipeline/run_outputs.h>
-#include <vlo/pipeline/scale_stage.h>
-#include <vlo/pipeline/visual_odometry_module.h>
 
 #include <filesystem>
 
@@ -25,6 +22,35 @@ void prepareOutputDir(const std::string& dir)
 	std::filesystem::create_directories(dir, ec);
 	if (ec || !std::filesystem::is_directory(dir)) failInput(dir, "cannot create output folder");
 }
+
+/// The modules of a run, created by name and configured.
+struct Stages
+{
+	std::unique_ptr<MotionSource> motion;
+	std::unique_ptr<LidarOdometryModule> lidar;
+};
+
+MotionSource* makeMotionSource(const std::string& name, const PipelineOptions& popt, RunConfig& config)
+{
+	auto m = registry<MotionSource>().create(name, config.origin() + ": [pipeline] motion_source");
+	m->configure(config, popt.motionSourceSetup());
+	return m.release();
+}
+
+/// One sensor INI serves every mode: the modules [pipeline] names all check their sections, so that a
+/// typo is an error in any mode; only those of the plan are kept.
+Stages makeStages(const PipelineOptions& popt, const RunPlan& plan, RunConfig& config)
+{
+	Stages s;
+	s.motion.reset(makeMotionSource(popt.motion_source, popt, config));
+	s.lidar = registry<LidarOdometryModule>().create(popt.lidar_odometry, config.origin() + ": [pipeline] lidar_odometry");
+	s.lidar->configure(config);
+	config.checkAllKeysUsed();
+	if (plan.motion_source != popt.motion_source)
+		s.motion.reset(plan.motion_source.empty() ? nullptr : makeMotionSource(plan.motion_source, popt, config));
+	if (!plan.lidar_odometry) s.lidar.reset();
+	return s;
+}
 }  // namespace
 
 RunSummary runPipeline(const RunRequest& req)
@@ -33,38 +59,25 @@ RunSummary runPipeline(const RunRequest& req)
 	PipelineOptions popt;
 	config.load(popt, "pipeline");
 	popt.validate(config.origin());
-	const bool vlo = popt.mode == "vlo";
-	// Visual bootstrapping: LOAM takes the VO's motion as its initial guess unless told otherwise.
-	if (vlo && popt.bootstrapping) config.setDefault("loam.prior", "source", "external");
-	// Every module reads its sections whatever the mode, so that one sensor INI serves all modes and a
-	// typo is an error in any of them; only the modules of the mode run.
-	auto visual = visualOdometryRegistry().create(popt.visual_odometry, config.origin() + ": [pipeline] visual_odometry");
-	visual->configure(config);
-	auto lidar = lidarOdometryRegistry().create(popt.lidar_odometry, config.origin() + ": [pipeline] lidar_odometry");
-	lidar->configure(config);
-	auto scaleStage = std::make_unique<ScaleStage>(config, popt.scale_snapshot_every);
-	if (!popt.needsCamera()) visual.reset();
-	if (!popt.needsLidar()) lidar.reset();
-	if (!vlo) scaleStage.reset();
-	config.checkAllKeysUsed();
+	const RunPlan plan = popt.plan();
+	Stages stages = makeStages(popt, plan, config);
 	prepareOutputDir(req.out);
 
 	RawlogReaderOptions ropt;
 	ropt.camera_label = popt.camera_label;
 	ropt.lidar_label = popt.lidar_label;
 	ropt.max_time_diff = popt.max_time_diff;
-	ropt.need_camera = popt.needsCamera();
-	ropt.need_lidar = popt.needsLidar();
+	ropt.need_camera = stages.motion != nullptr;
+	ropt.need_lidar = stages.lidar != nullptr;
 	RawlogReader reader(req.rawlog, ropt);
 
 	RunOutputs outputs;
+	outputs.plan = plan;
+	outputs.motion_source = stages.motion.get();
 	GlobalMap globalMap(popt.map_voxel, popt.map_max_range);
-	outputs.mode = popt.mode;
 	ProgressLine progress("vlo-run: frame", 0);
 	const auto loopStart = SteadyClock::now();
-	std::optional<MetricVoPath> metricVo;
-	Frame frame, prev;
-	bool hasPrev = false;
+	Frame frame;
 	while ((popt.max_frames == 0 || outputs.table.rows() < std::size_t(popt.max_frames)) && reader.next(frame))
 	{
 		auto& table = outputs.table;
@@ -72,26 +85,14 @@ RunSummary runPipeline(const RunRequest& req)
 		table.set("frame", static_cast<long long>(frame.index));
 		table.set("t", frame.t, 6);
 		const auto t0 = SteadyClock::now();
-		std::optional<Eigen::Isometry3d> guess;  // LOAM's initial guess of the vehicle motion
-		if (visual)
+		std::optional<Eigen::Isometry3d> motion;  // of the vehicle since the previous frame
+		if (stages.motion) motion = stages.motion->process(frame, table);
+		if (stages.lidar)
 		{
-			auto t1 = SteadyClock::now();
-			const VisualOdometryStep step = visual->process(frame, table);
-			table.set("ms_vo", lapMs(t1), 2);
-			if (!vlo && step.pose) outputs.vo.push_back({frame.t, *step.pose});
-			if (vlo)
-			{
-				const ScaleApplied applied = scaleStage->process(hasPrev ? &prev : nullptr, frame, step, *visual, table);
-				if (!metricVo) metricVo.emplace(frame.rig.vehicle_T_camera);
-				const auto motion = metricVo->update(frame.t, step, applied);
-				if (popt.bootstrapping) guess = motion;
-				table.set("vo_metric_motion", motion.has_value());
-			}
-		}
-		if (lidar)
-		{
-			const Eigen::Isometry3d pose = lidar->process(frame, guess, table);
-			outputs.lo.push_back({frame.t, pose});
+			if (stages.motion) table.set("vo_metric_motion", motion.has_value());
+			const Eigen::Isometry3d pose =
+				stages.lidar->process(frame, plan.bootstrapping ? motion : std::nullopt, table);
+			outputs.lidar.push_back({frame.t, pose});
 			if (popt.map_every > 0 && frame.index % popt.map_every == 0)
 				globalMap.insert(frame.scan, pose * frame.rig.vehicle_T_lidar);
 			table.set("x", pose.translation().x(), 3);
@@ -100,12 +101,6 @@ RunSummary runPipeline(const RunRequest& req)
 		}
 		table.set("ms_total", msSince(t0), 2);
 		if (popt.sample_frame_every > 0 && frame.index % popt.sample_frame_every == 0) outputs.addSampleFrame(frame);
-		if (vlo)
-		{
-			prev = frame;
-			prev.image = frame.image.makeDeepCopy();  // the reader may reuse the image buffer
-			hasPrev = true;
-		}
 		progress.update(table.rows(), reader.progress());
 	}
 	progress.finish();
@@ -113,19 +108,11 @@ RunSummary runPipeline(const RunRequest& req)
 	if (outputs.table.rows() == 0) failInput(req.rawlog, "no frame to process");
 
 	outputs.map = globalMap.points();
-	if (metricVo) outputs.vo = metricVo->trajectory();
-	if (scaleStage) outputs.scale_snapshots = scaleStage->snapshots();
 	RunSummary summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);
 	summary.frames = outputs.table.rows();
 	summary.seconds = loopSeconds;
 	summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;
 	summary.reader_stats = reader.statsSummary();
-	if (scaleStage)
-	{
-		summary.figures.push_back({"scale_estimates", double(scaleStage->estimates())});
-		summary.figures.push_back({"scale_valid", double(scaleStage->valid())});
-		summary.figures.push_back({"scale_corrections", double(scaleStage->corrections())});
-	}
 	writeSummaryJson(req.out + "/summary.json", summary, req);
 	return summary;
 }

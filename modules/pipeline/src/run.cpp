@@ -5,6 +5,8 @@
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/kernel/lidar_odometry.h>
 #include <vlo/kernel/motion_source.h>
+#include <vlo/kernel/scale_correction.h>
+#include <vlo/kernel/visual_odometry.h>
 #include <vlo/pipeline/global_map.h>
 #include <vlo/pipeline/pipeline_options.h>
 #include <vlo/pipeline/run.h>
@@ -30,25 +32,38 @@ struct Stages
 	std::unique_ptr<LidarOdometryModule> lidar;
 };
 
-MotionSource* makeMotionSource(const std::string& name, const PipelineOptions& popt, RunConfig& config)
+/// One sensor INI serves every mode and every method: each registered module of a family loads and
+/// checks its sections, so that the sections of a module not chosen are no error and a typo is one
+/// whichever module runs.
+template <class Family, class... Args>
+void checkOptionsOfAll(RunConfig& config, const Args&... args)
 {
-	auto m = registry<MotionSource>().create(name, config.origin() + ": [pipeline] motion_source");
-	m->configure(config, popt.motionSourceSetup());
-	return m.release();
+	for (auto& [name, module] : registry<Family>().createAll()) module->configure(config, args...);
 }
 
-/// One sensor INI serves every mode: the modules [pipeline] names all check their sections, so that a
-/// typo is an error in any mode; only those of the plan are kept.
+/// Creates and configures the modules the plan runs, and no other.
 Stages makeStages(const PipelineOptions& popt, const RunPlan& plan, RunConfig& config)
 {
+	const std::string where = config.origin() + ": [pipeline] ";
+	registry<MotionSource>().require(popt.motion_source, where + "motion_source");
+	registry<VisualOdometryModule>().require(popt.visual_odometry, where + "visual_odometry");
+	registry<ScaleCorrectionModule>().require(popt.scale_correction, where + "scale_correction");
+	registry<LidarOdometryModule>().require(popt.lidar_odometry, where + "lidar_odometry");
+	checkOptionsOfAll<VisualOdometryModule>(config);
+	checkOptionsOfAll<ScaleCorrectionModule>(config, 0);
+	checkOptionsOfAll<LidarOdometryModule>(config);
 	Stages s;
-	s.motion.reset(makeMotionSource(popt.motion_source, popt, config));
-	s.lidar = registry<LidarOdometryModule>().create(popt.lidar_odometry, config.origin() + ": [pipeline] lidar_odometry");
-	s.lidar->configure(config);
+	if (!plan.motion_source.empty())
+	{
+		s.motion = registry<MotionSource>().create(plan.motion_source, where + "motion_source");
+		s.motion->configure(config, popt.motionSourceSetup());
+	}
+	if (plan.lidar_odometry)
+	{
+		s.lidar = registry<LidarOdometryModule>().create(popt.lidar_odometry, where + "lidar_odometry");
+		s.lidar->configure(config);
+	}
 	config.checkAllKeysUsed();
-	if (plan.motion_source != popt.motion_source)
-		s.motion.reset(plan.motion_source.empty() ? nullptr : makeMotionSource(plan.motion_source, popt, config));
-	if (!plan.lidar_odometry) s.lidar.reset();
 	return s;
 }
 }  // namespace

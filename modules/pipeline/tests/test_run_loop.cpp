@@ -314,7 +314,9 @@ TEST_F(RunLoop, BadModuleNamesAreInputErrors)
 	EXPECT_NE(runError({"pipeline.lidar_odometry=nope"}).find("[pipeline] lidar_odometry: unknown module 'nope'"),
 		std::string::npos);
 	EXPECT_NE(runError({"pipeline.motion_source=nope"}).find("known: metric_mono, visual"), std::string::npos);
-	EXPECT_NE(runError({"pipeline.visual_odometry=fake_stereo"}).find("'fake_stereo' is not a monocular VO"),
+	EXPECT_NE(runError({"pipeline.scale_correction=nope"}).find("[pipeline] scale_correction: unknown module"),
+		std::string::npos);  // in mode lo too, which runs no scale correction
+	EXPECT_NE(runError({"pipeline.mode=vlo", "pipeline.visual_odometry=fake_stereo"}).find("'fake_stereo' is not a monocular VO"),
 		std::string::npos);
 	EXPECT_FALSE(std::filesystem::exists(out("frames.csv")));
 }

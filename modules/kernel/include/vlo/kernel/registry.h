@@ -10,6 +10,8 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace vlo
 {
@@ -31,12 +33,23 @@ class Registry
 	/// `where` names the option that asked for it, for the error message.
 	std::unique_ptr<Base> create(const std::string& name, const std::string& where) const
 	{
-		const auto it = factories_.find(name);
-		if (it == factories_.end()) failInput(where, "unknown module '" + name + "' (known: " + names() + ")");
-		return it->second();
+		require(name, where);
+		return factories_.at(name)();
 	}
 
-	bool has(const std::string& name) const { return factories_.count(name) > 0; }
+	/// Throws InputError naming `where` when no module is registered under `name`.
+	void require(const std::string& name, const std::string& where) const
+	{
+		if (!factories_.count(name)) failInput(where, "unknown module '" + name + "' (known: " + names() + ")");
+	}
+
+	/// One new instance of every registered module, by name.
+	std::vector<std::pair<std::string, std::unique_ptr<Base>>> createAll() const
+	{
+		std::vector<std::pair<std::string, std::unique_ptr<Base>>> all;
+		for (const auto& [n, f] : factories_) all.emplace_back(n, f());
+		return all;
+	}
 
 	std::string names() const
 	{

@@ -34,3 +34,17 @@ function(vlo_add_app name)
   target_link_libraries(${name} PRIVATE ${ARG_DEPS})
   target_compile_options(${name} PRIVATE ${VLO_WARNINGS})
 endfunction()
+
+# vlo_register_module(<name> SOURCES <files...> DEPS <targets...>)
+# An implementation of a module family (modules/kernel), kept beside its estimator, that registers
+# itself with VLO_REGISTER_MODULE. It is built as an OBJECT library vlo_module_<name>: its objects
+# are linked whole into each program that lists it, so the linker cannot drop the registration as it
+# would from a static archive that nothing references. Every such library is appended to the global
+# property VLO_REGISTERED_MODULES, which vlo-run links.
+function(vlo_register_module name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_library(vlo_module_${name} OBJECT ${ARG_SOURCES})
+  target_link_libraries(vlo_module_${name} PUBLIC vlo::kernel ${ARG_DEPS})
+  target_compile_options(vlo_module_${name} PRIVATE ${VLO_WARNINGS})
+  set_property(GLOBAL APPEND PROPERTY VLO_REGISTERED_MODULES vlo_module_${name})
+endfunction()

@@ -28,17 +28,11 @@ LidarOdometry::LidarOdometry(const LoamOptions& o)
 {
 }
 
-void LidarOdometry::setMotionPrior(std::unique_ptr<MotionPrior> prior)
-{
-	if (prior) prior_ = std::move(prior);
-}
-
 void LidarOdometry::reset()
 {
 	odometry_.clearReference();
 	mapper_.clear();
 	prior_->reset();
-	features_ = {};
 	frames_ = 0;
 	pose_ = odom_pose_ = odom_ref_ = map_T_odom_ = Eigen::Isometry3d::Identity();
 	t_prev_.reset();
@@ -177,7 +171,6 @@ LidarOdometryResult LidarOdometry::process(
 	pose_ = pose;
 	t_prev_ = t;
 	++frames_;
-	features_ = std::move(f);
 	r.ms.total = msSince(start);
 	return r;
 }

@@ -9,6 +9,8 @@ void PipelineOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
 	MRPT_LOAD_CONFIG_VAR(mode, string, c, s);
 	MRPT_LOAD_CONFIG_VAR(lidar_odometry, string, c, s);
 	MRPT_LOAD_CONFIG_VAR(visual_odometry, string, c, s);
+	MRPT_LOAD_CONFIG_VAR(scale_correction, string, c, s);
+	MRPT_LOAD_CONFIG_VAR(motion_source, string, c, s);
 	MRPT_LOAD_CONFIG_VAR(camera_label, string, c, s);
 	MRPT_LOAD_CONFIG_VAR(lidar_label, string, c, s);
 	MRPT_LOAD_CONFIG_VAR(max_time_diff, double, c, s);
@@ -27,6 +29,8 @@ void PipelineOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const s
 	MRPT_SAVE_CONFIG_VAR_COMMENT(mode, "lo = LiDAR odometry alone (A-LOAM baseline); vo = camera only; vlo = full");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(lidar_odometry, "LiDAR odometry module (registry name)");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(visual_odometry, "visual odometry module (registry name)");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(scale_correction, "scale-correction module of a monocular VO (registry name)");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(motion_source, "vlo: LiDAR odometry's initial guess: metric_mono = VO + scale correction; visual = VO alone");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(camera_label, "sensor label of the camera observations");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(lidar_label, "sensor label of the LiDAR observations");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(max_time_diff, "[s] largest time difference of a paired image and scan");
@@ -51,5 +55,12 @@ void PipelineOptions::validate(const std::string& origin) const
 	if (map_max_range <= 0) failInput(origin + ": [pipeline] map_max_range", "must be > 0");
 	if (sample_frame_every < 0) failInput(origin + ": [pipeline] sample_frame_every", "must be >= 0");
 	if (scale_snapshot_every < 0) failInput(origin + ": [pipeline] scale_snapshot_every", "must be >= 0");
+}
+
+RunPlan PipelineOptions::plan() const
+{
+	if (mode == "lo") return {"lo", "", true, false, "LiDAR odometry"};
+	if (mode == "vo") return {"vo", "visual", false, false, ""};
+	return {"vlo", motion_source, true, bootstrapping, "VLO"};
 }
 }  // namespace vlo

@@ -1,18 +1,17 @@
+// The run loop, as the paper's figure: frame -> motion source -> LiDAR odometry -> outputs.
 #include <vlo/core/error.h>
 #include <vlo/core/progress.h>
 #include <vlo/core/stopwatch.h>
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/io/undistort.h>
-#include <vlo/io/trajectory.h>
-#include <vlo/pipeline/frame_table.h>
+#include <vlo/kernel/lidar_odometry.h>
+#include <vlo/kernel/motion_source.h>
+#include <vlo/kernel/scale_correction.h>
+#include <vlo/kernel/visual_odometry.h>
 #include <vlo/pipeline/global_map.h>
-#include <vlo/pipeline/lidar_odometry_module.h>
 #include <vlo/pipeline/pipeline_options.h>
 #include <vlo/pipeline/run.h>
-#include <vlo/pipeline/metric_vo_path.h>
 #include <vlo/pipeline/run_outputs.h>
-#include <vlo/pipeline/scale_stage.h>
-#include <vlo/pipeline/visual_odometry_module.h>
 
 #include <filesystem>
 
@@ -26,6 +25,48 @@ void prepareOutputDir(const std::string& dir)
 	std::filesystem::create_directories(dir, ec);
 	if (ec || !std::filesystem::is_directory(dir)) failInput(dir, "cannot create output folder");
 }
+
+/// The modules of a run, created by name and configured.
+struct Stages
+{
+	std::unique_ptr<MotionSource> motion;
+	std::unique_ptr<LidarOdometryModule> lidar;
+};
+
+/// One sensor INI serves every mode and every method: each registered module of a family loads and
+/// checks its sections, so that the sections of a module not chosen are no error and a typo is one
+/// whichever module runs.
+template <class Family, class... Args>
+void checkOptionsOfAll(RunConfig& config, const Args&... args)
+{
+	for (auto& [name, module] : registry<Family>().createAll()) module->configure(config, args...);
+}
+
+/// Creates and configures the modules the plan runs, and no other.
+Stages makeStages(const PipelineOptions& popt, const RunPlan& plan, RunConfig& config)
+{
+	const std::string where = config.origin() + ": [pipeline] ";
+	registry<MotionSource>().require(popt.motion_source, where + "motion_source");
+	registry<VisualOdometryModule>().require(popt.visual_odometry, where + "visual_odometry");
+	registry<ScaleCorrectionModule>().require(popt.scale_correction, where + "scale_correction");
+	registry<LidarOdometryModule>().require(popt.lidar_odometry, where + "lidar_odometry");
+	checkOptionsOfAll<VisualOdometryModule>(config);
+	checkOptionsOfAll<ScaleCorrectionModule>(config, 0);
+	checkOptionsOfAll<LidarOdometryModule>(config);
+	Stages s;
+	if (!plan.motion_source.empty())
+	{
+		s.motion = registry<MotionSource>().create(plan.motion_source, where + "motion_source");
+		s.motion->configure(config, popt.motionSourceSetup());
+	}
+	if (plan.lidar_odometry)
+	{
+		s.lidar = registry<LidarOdometryModule>().create(popt.lidar_odometry, where + "lidar_odometry");
+		s.lidar->configure(config);
+	}
+	config.checkAllKeysUsed();
+	return s;
+}
 }  // namespace
 
 RunSummary runPipeline(const RunRequest& req)
@@ -34,39 +75,26 @@ RunSummary runPipeline(const RunRequest& req)
 	PipelineOptions popt;
 	config.load(popt, "pipeline");
 	popt.validate(config.origin());
-	const bool vlo = popt.mode == "vlo";
-	// Visual bootstrapping: LOAM takes the VO's motion as its initial guess unless told otherwise.
-	if (vlo && popt.bootstrapping) config.setDefault("loam.prior", "source", "external");
-	// Every module reads its sections whatever the mode, so that one sensor INI serves all modes and a
-	// typo is an error in any of them; only the modules of the mode run.
-	auto visual = visualOdometryRegistry().create(popt.visual_odometry, config.origin() + ": [pipeline] visual_odometry");
-	visual->configure(config);
-	auto lidar = lidarOdometryRegistry().create(popt.lidar_odometry, config.origin() + ": [pipeline] lidar_odometry");
-	lidar->configure(config);
-	auto scaleStage = std::make_unique<ScaleStage>(config, popt.scale_snapshot_every);
-	if (!popt.needsCamera()) visual.reset();
-	if (!popt.needsLidar()) lidar.reset();
-	if (!vlo) scaleStage.reset();
-	config.checkAllKeysUsed();
+	const RunPlan plan = popt.plan();
+	Stages stages = makeStages(popt, plan, config);
 	prepareOutputDir(req.out);
 
 	RawlogReaderOptions ropt;
 	ropt.camera_label = popt.camera_label;
 	ropt.lidar_label = popt.lidar_label;
 	ropt.max_time_diff = popt.max_time_diff;
-	ropt.need_camera = popt.needsCamera();
-	ropt.need_lidar = popt.needsLidar();
+	ropt.need_camera = stages.motion != nullptr;
+	ropt.need_lidar = stages.lidar != nullptr;
 	RawlogReader reader(req.rawlog, ropt);
 
 	RunOutputs outputs;
+	outputs.plan = plan;
+	outputs.motion_source = stages.motion.get();
 	GlobalMap globalMap(popt.map_voxel, popt.map_max_range);
-	outputs.mode = popt.mode;
 	ProgressLine progress("vlo-run: frame", 0);
 	const auto loopStart = SteadyClock::now();
-	std::optional<MetricVoPath> metricVo;
-	Frame frame, prev;
-	bool hasPrev = false;
-	ImageUndistorter undistorter;  // the estimators and snapshots see ideal pinhole images
+	Frame frame;
+	ImageUndistorter undistorter;  // the camera's estimators and snapshots see ideal pinhole images
 	while ((popt.max_frames == 0 || outputs.table.rows() < std::size_t(popt.max_frames)) && reader.next(frame))
 	{
 		auto& table = outputs.table;
@@ -74,27 +102,18 @@ RunSummary runPipeline(const RunRequest& req)
 		table.set("frame", static_cast<long long>(frame.index));
 		table.set("t", frame.t, 6);
 		const auto t0 = SteadyClock::now();
-		if (visual) undistorter.apply(frame);
-		std::optional<Eigen::Isometry3d> guess;  // LOAM's initial guess of the vehicle motion
-		if (visual)
+		std::optional<Eigen::Isometry3d> motion;  // of the vehicle since the previous frame
+		if (stages.motion)
 		{
-			auto t1 = SteadyClock::now();
-			const VisualOdometryStep step = visual->process(frame, table);
-			table.set("ms_vo", lapMs(t1), 2);
-			if (!vlo && step.pose) outputs.vo.push_back({frame.t, *step.pose});
-			if (vlo)
-			{
-				const ScaleApplied applied = scaleStage->process(hasPrev ? &prev : nullptr, frame, step, *visual, table);
-				if (!metricVo) metricVo.emplace(frame.rig.vehicle_T_camera);
-				const auto motion = metricVo->update(frame.t, step, applied);
-				if (popt.bootstrapping) guess = motion;
-				table.set("vo_metric_motion", motion.has_value());
-			}
+			undistorter.apply(frame);
+			motion = stages.motion->process(frame, table);
 		}
-		if (lidar)
+		if (stages.lidar)
 		{
-			const Eigen::Isometry3d pose = lidar->process(frame, guess, table);
-			outputs.lo.push_back({frame.t, pose});
+			if (stages.motion) table.set("vo_metric_motion", motion.has_value());
+			const Eigen::Isometry3d pose =
+				stages.lidar->process(frame, plan.bootstrapping ? motion : std::nullopt, table);
+			outputs.lidar.push_back({frame.t, pose});
 			if (popt.map_every > 0 && frame.index % popt.map_every == 0)
 				globalMap.insert(frame.scan, pose * frame.rig.vehicle_T_lidar);
 			table.set("x", pose.translation().x(), 3);
@@ -103,12 +122,6 @@ RunSummary runPipeline(const RunRequest& req)
 		}
 		table.set("ms_total", msSince(t0), 2);
 		if (popt.sample_frame_every > 0 && frame.index % popt.sample_frame_every == 0) outputs.addSampleFrame(frame);
-		if (vlo)
-		{
-			prev = frame;
-			prev.image = frame.image.makeDeepCopy();  // the reader may reuse the image buffer
-			hasPrev = true;
-		}
 		progress.update(table.rows(), reader.progress());
 	}
 	progress.finish();
@@ -116,19 +129,11 @@ RunSummary runPipeline(const RunRequest& req)
 	if (outputs.table.rows() == 0) failInput(req.rawlog, "no frame to process");
 
 	outputs.map = globalMap.points();
-	if (metricVo) outputs.vo = metricVo->trajectory();
-	if (scaleStage) outputs.scale_snapshots = scaleStage->snapshots();
 	RunSummary summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);
 	summary.frames = outputs.table.rows();
 	summary.seconds = loopSeconds;
 	summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;
 	summary.reader_stats = reader.statsSummary();
-	if (scaleStage)
-	{
-		summary.figures.push_back({"scale_estimates", double(scaleStage->estimates())});
-		summary.figures.push_back({"scale_valid", double(scaleStage->valid())});
-		summary.figures.push_back({"scale_corrections", double(scaleStage->corrections())});
-	}
 	writeSummaryJson(req.out + "/summary.json", summary, req);
 	return summary;
 }

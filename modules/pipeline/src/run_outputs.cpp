@@ -2,7 +2,6 @@
 #include <vlo/core/error.h>
 #include <vlo/io/pcd.h>
 #include <vlo/pipeline/run_outputs.h>
-#include <vlo/scale/overlay.h>
 #include <vlo/viz/map3d.h>
 #include <vlo/viz/projected_scan.h>
 #include <vlo/viz/topdown.h>
@@ -51,12 +50,12 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::stri
 		gt = relativeToFirst(gt);
 	}
 	std::vector<NamedTrajectory> trajs;
-	if (!o.lo.empty()) trajs.push_back({o.mode == "lo" ? "LiDAR odometry" : "VLO", o.lo, std::nullopt});
-	if (!o.vo.empty())
-		trajs.push_back({o.mode == "vlo" ? "scale-corrected VO" : "visual odometry", o.vo, std::nullopt});
+	if (!o.lidar.empty()) trajs.push_back({o.plan.lidar_label, o.lidar, std::nullopt});
+	if (o.motion_source && !o.motion_source->trajectory().empty())
+		trajs.push_back({o.motion_source->label(), o.motion_source->trajectory(), std::nullopt});
 	if (trajs.empty()) return;
 	TopDownStyle td;
-	td.title = "vlo-run (" + o.mode + "), " + std::to_string(o.table.rows()) + " frames";
+	td.title = "vlo-run (" + o.plan.name + "), " + std::to_string(o.table.rows()) + " frames";
 	renderTopDown(trajs, gt.empty() ? nullptr : &gt, dir + "/topdown.png", td);
 	if (!o.map.empty())
 	{
@@ -73,18 +72,7 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::stri
 		std::snprintf(name, sizeof(name), "/frame_%06zu.png", f.index);
 		renderProjectedScan(f.image, f.scan, f.rig, dir + name, {}, ps);
 	}
-	for (const auto& snap : o.scale_snapshots)
-	{
-		const auto& e = snap.estimate;
-		ProjectedScanStyle ps;
-		char title[160];
-		std::snprintf(title, sizeof(title), "C(%zu)->C(%zu): s %.3f, %d of %d inliers (%s)", snap.prev.index,
-			snap.cur_index, e.scale, e.counts.inliers, e.counts.triangulated, scale::toString(e.reason));
-		ps.title = title;
-		char name[64];
-		std::snprintf(name, sizeof(name), "/scale_%06zu.png", snap.cur_index);
-		renderProjectedScan(snap.prev.image, snap.prev.scan, snap.prev.rig, dir + name, scale::scaleOverlay(e), ps);
-	}
+	if (o.motion_source) o.motion_source->writeSnapshots(dir);
 }
 }  // namespace
 
@@ -99,13 +87,15 @@ RunSummary RunOutputs::write(
 	const std::string& dir, const PipelineOptions& opt, const std::string& effectiveIni, const std::string& gtPath) const
 {
 	RunSummary s;
-	s.mode = mode;
-	const Trajectory& finalTraj = mode == "vo" ? vo : lo;
-	s.final_trajectory = "trajectory_" + mode + ".tum";
-	if (!lo.empty()) writeTum(dir + (mode == "vlo" ? "/trajectory_vlo.tum" : "/trajectory_lo.tum"), lo);
-	if (!vo.empty()) writeTum(dir + "/trajectory_vo.tum", vo);
+	s.mode = plan.name;
+	const Trajectory motion = motion_source ? motion_source->trajectory() : Trajectory{};
+	const Trajectory& finalTraj = plan.lidar_odometry ? lidar : motion;
+	s.final_trajectory = "trajectory_" + plan.name + ".tum";
+	if (!lidar.empty()) writeTum(dir + "/" + s.final_trajectory, lidar);
+	if (!motion.empty()) writeTum(dir + "/trajectory_vo.tum", motion);
 	s.path_length_m = pathLength(finalTraj);
 	s.max_step_m = maxStep(finalTraj);
+	if (motion_source) s.figures = motion_source->figures();
 	table.write(dir + "/frames.csv");
 	if (!map.empty()) writePcd(dir + "/map.pcd", map);
 	{

@@ -1,7 +1,7 @@
 // The metric VO path: a fresh map's frames re-expressed when its first scale arrives, later frames
 // chained from scaled motions, a new map after LOST continuing where the path left off.
 #include <gtest/gtest.h>
-#include <vlo/pipeline/metric_vo_path.h>
+#include "metric_vo_path.h"
 
 using namespace vlo;
 
@@ -23,10 +23,9 @@ Eigen::Isometry3d forward(double z)
 	return T;
 }
 
-VisualOdometryStep tracked(double mapZ, std::optional<double> motionZ, bool newMap = false)
+MonocularState tracked(double mapZ, std::optional<double> motionZ, bool newMap = false)
 {
-	VisualOdometryStep s;
-	s.tracked = true;
+	MonocularState s;
 	s.camera_map_pose = forward(mapZ);
 	if (motionZ) s.camera_motion = forward(*motionZ);
 	s.new_map = newMap;
@@ -37,7 +36,7 @@ VisualOdometryStep tracked(double mapZ, std::optional<double> motionZ, bool newM
 TEST(MetricVoPath, NothingUntilTheFirstScaleThenTheWholeMapInMetres)
 {
 	MetricVoPath path(vehicleTcamera());
-	EXPECT_FALSE(path.update(0.0, VisualOdometryStep{}, {}));  // initialising
+	EXPECT_FALSE(path.update(0.0, MonocularState{}, {}));  // initialising
 	EXPECT_FALSE(path.update(0.1, tracked(1.0, std::nullopt, true), {}));  // map made, scale unknown
 	EXPECT_TRUE(path.trajectory().empty());
 	// Next frame: the first estimate says VO units are 0.5 m.
@@ -69,7 +68,7 @@ TEST(MetricVoPath, LostLeavesAGapAndANewMapContinuesFromTheLastPose)
 	MetricVoPath path(vehicleTcamera());
 	path.update(0.0, tracked(1.0, std::nullopt, true), {});
 	path.update(0.1, tracked(2.0, 1.0), {1.0, true});  // at 2 m
-	EXPECT_FALSE(path.update(0.2, VisualOdometryStep{}, {}));  // LOST: no motion for LOAM
+	EXPECT_FALSE(path.update(0.2, MonocularState{}, {}));  // LOST: no motion for LOAM
 	EXPECT_FALSE(path.update(0.3, tracked(0.5, std::nullopt, true), {}));  // new map, unknown scale
 	EXPECT_EQ(path.trajectory().size(), 2u);
 	const auto m = path.update(0.4, tracked(1.0, 0.5), {2.0, true});  // VO units are 2 m

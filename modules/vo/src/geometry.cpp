@@ -1,7 +1,5 @@
 #include <vlo/vo/geometry.h>
 
-#include <limits>
-
 namespace vlo::vo
 {
 Mat3 skew(const Vec3& v)
@@ -26,14 +24,5 @@ Mat3 fundamentalBetween(const SE3& T1w, const SE3& T2w, const PinholeCamera& c)
 	const Mat3 E12 = skew(T12.translation()) * T12.linear();
 	const Mat3 Kinv = c.K().inverse();
 	return Kinv.transpose() * E12 * Kinv;
-}
-
-double epipolarDistance2(const Mat3& F12, const Vec2& x1, const Vec2& x2)
-{
-	const Vec3 l = F12.transpose() * x1.homogeneous();
-	const double n2 = l.x() * l.x() + l.y() * l.y();
-	if (n2 <= 0) return std::numeric_limits<double>::infinity();
-	const double d = l.dot(x2.homogeneous());
-	return d * d / n2;
 }
 }  // namespace vlo::vo

@@ -7,16 +7,7 @@
 namespace vlo::vo
 {
 const VoFrameInfo& VisualOdometry::lastInfo() const { return impl_->info; }
-std::shared_ptr<const Features> VisualOdometry::currentFeatures() const { return impl_->current_feat; }
 VoState VisualOdometry::state() const { return impl_->state; }
-
-std::vector<long> VisualOdometry::currentPointIds() const
-{
-	std::vector<long> ids;
-	if (!impl_->last.has_pose) return ids;
-	for (const MapPoint* p : impl_->last.points) ids.push_back(p && !p->bad ? p->id : -1);
-	return ids;
-}
 
 namespace
 {
@@ -74,7 +65,7 @@ void VisualOdometry::Impl::scaleAbout(SE3& T, const SE3& Ta, double s)
 	T = Tr * Ta;
 }
 
-bool VisualOdometry::rescaleLocalWindow(double s)
+bool VisualOdometry::rescaleAboutWindow(double s)
 {
 	auto& m = *impl_;
 	if (!m.map || !m.mapper || !(s > 0) || !m.mapper->window().anchor) return false;

@@ -60,9 +60,6 @@ class LidarOdometry
 	/// Validates the options (throws InputError naming the bad key).
 	explicit LidarOdometry(const LoamOptions& o = {});
 
-	/// Replaces the initial-guess provider (default: the one options.prior names).
-	void setMotionPrior(std::unique_ptr<MotionPrior> prior);
-
 	/// Processes the scan taken at time t (LiDAR frame). `prior_motion` is the caller's guess of
 	/// the motion since the previous frame (the pose of this LiDAR frame in the previous one);
 	/// the ConstantVelocity prior ignores it. Never throws on bad data: see status and reason.
@@ -72,7 +69,6 @@ class LidarOdometry
 	std::size_t frames() const { return frames_; }
 	const Eigen::Isometry3d& pose() const { return pose_; }
 	const LoamOptions& options() const { return opt_; }
-	const FeatureSet& lastFeatures() const { return features_; }
 	const ScanToMap& mapper() const { return mapper_; }
 	/// Every map point (edges, then planes) in the first LiDAR frame.
 	std::vector<Eigen::Vector3f> mapPoints() const;
@@ -87,7 +83,6 @@ class LidarOdometry
 	ScanToScanOdometry odometry_;
 	ScanToMap mapper_;
 	std::unique_ptr<MotionPrior> prior_;
-	FeatureSet features_;
 
 	std::size_t frames_ = 0;
 	Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();  ///< map frame, last frame

@@ -1,16 +1,31 @@
 #pragma once
-// The [pipeline] section: which estimators run, how observations are paired, what is written.
+// The [pipeline] section: which modules run, how observations are paired, what is written.
 #include <mrpt/config/CLoadableOptions.h>
+#include <vlo/kernel/motion_source.h>
 
 #include <string>
 
 namespace vlo
 {
+/// What a run does, decided from the mode in this one place: frame -> motion source -> LiDAR
+/// odometry -> outputs, with either stage left out.
+struct RunPlan
+{
+	std::string name;  ///< lo | vo | vlo: the final trajectory is trajectory_<name>.tum
+	std::string motion_source;  ///< registry name; empty = none (mode lo)
+	bool lidar_odometry = false;  ///< false in mode vo
+	bool bootstrapping = false;  ///< the motion source's motion is the LiDAR odometry's initial guess
+	std::string lidar_label;  ///< name of the LiDAR odometry's trajectory in plots
+};
+
 struct PipelineOptions : public mrpt::config::CLoadableOptions
 {
 	std::string mode = "lo";  ///< lo (LiDAR only, the A-LOAM baseline) | vo | vlo
 	std::string lidar_odometry = "aloam";  ///< registry name of the LiDAR odometry module
 	std::string visual_odometry = "orb";  ///< registry name of the visual odometry module
+	std::string scale_correction = "lidar_depth";  ///< registry name of the scale-correction module
+	/// Registry name of the motion source of mode vlo (mode vo: the VO alone, "visual").
+	std::string motion_source = "metric_mono";
 	std::string camera_label = "CAMERA";
 	std::string lidar_label = "LIDAR";
 	double max_time_diff = 0.05;  ///< [s] between a paired image and scan
@@ -30,7 +45,8 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	/// Throws InputError naming the key for an impossible value.
 	void validate(const std::string& origin) const;
 
-	bool needsCamera() const { return mode != "lo"; }
-	bool needsLidar() const { return mode != "vo"; }
+	RunPlan plan() const;
+	/// The module names a motion source composes.
+	MotionSourceSetup motionSourceSetup() const { return {visual_odometry, scale_correction, scale_snapshot_every}; }
 };
 }  // namespace vlo

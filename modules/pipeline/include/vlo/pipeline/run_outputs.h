@@ -2,10 +2,10 @@
 // Everything a run accumulates, and how it is written into the output folder.
 #include <vlo/core/frame.h>
 #include <vlo/io/trajectory.h>
-#include <vlo/pipeline/frame_table.h>
+#include <vlo/kernel/frame_table.h>
+#include <vlo/kernel/motion_source.h>
 #include <vlo/pipeline/pipeline_options.h>
 #include <vlo/pipeline/run.h>
-#include <vlo/pipeline/scale_stage.h>
 
 #include <string>
 #include <vector>
@@ -14,13 +14,12 @@ namespace vlo
 {
 struct RunOutputs
 {
-	std::string mode;
+	RunPlan plan;
 	FrameTable table;
-	Trajectory lo;  ///< LiDAR odometry (mode lo) or the final VLO trajectory (mode vlo), vehicle frame
-	Trajectory vo;  ///< visual odometry (tracked frames only; metric in mode vlo), vehicle frame
+	Trajectory lidar;  ///< the LiDAR odometry's (trajectory_lo.tum or trajectory_vlo.tum), vehicle frame
+	const MotionSource* motion_source = nullptr;  ///< its path is trajectory_vo.tum; draws its own snapshots
 	PointCloud map;  ///< vehicle frame of the first frame (already thinned)
 	std::vector<Frame> sample_frames;  ///< for projected-scan snapshots
-	std::vector<ScaleSnapshot> scale_snapshots;  ///< mode vlo: frames with a scale estimate to draw
 
 	void addSampleFrame(const Frame& f);
 	/// Writes trajectories, frames.csv, map.pcd, run.ini and snapshots/; returns the summary figures.

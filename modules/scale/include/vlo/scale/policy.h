@@ -2,7 +2,7 @@
 // When to apply a scale estimate to the VO map (paper III-C): the first valid estimate after the VO's
 // initialisation sets the metric scale; afterwards a correction only when |s - 1| >= 2 % (option),
 // because every correction disturbs the local mapping. The paper applies each estimate as is
-// (correction_window = 1); by default the median of the last 5 decides, which also ignores the odd
+// (correction_window = 1); by default the median of the last 15 (correction_window) decides, which also ignores the odd
 // outlier (see ScaleOptions).
 #include <vlo/scale/diagnostics.h>
 #include <vlo/scale/options.h>

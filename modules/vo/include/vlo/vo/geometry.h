@@ -36,6 +36,4 @@ inline Vec3 centre(const SE3& Tcw) { return -(Tcw.linear().transpose() * Tcw.tra
 
 /// F12 such that x1^T F12 x2 = 0 for cameras with poses T1w and T2w (pixels, homogeneous).
 Mat3 fundamentalBetween(const SE3& T1w, const SE3& T2w, const PinholeCamera& c);
-/// Squared distance of x2 to the epipolar line l2 = F12^T x1 in image 2.
-double epipolarDistance2(const Mat3& F12, const Vec2& x1, const Vec2& x2);
 }  // namespace vlo::vo

@@ -4,9 +4,9 @@
 // mapping inline when it makes a keyframe. After LOST a new map is initialised and placed where the
 // old trajectory left off, so the output trajectory continues (see doc/VO.md for its scale).
 //
-// For the scale corrector: each frame's relative motion and keypoints, the local window of the last
-// local bundle adjustment, rescaleLocalWindow() about the window's earliest keyframe, and
-// setMapScale() for the metric scale of a fresh map.
+// For the scale corrector: each frame's relative motion, the local window of the last local bundle
+// adjustment, rescaleAboutWindow() (the whole map, about the window's earliest keyframe) for a drift
+// correction, and setMapScale() (about the map's origin) for the metric scale of a fresh map.
 #include <vlo/vo/features.h>
 #include <vlo/vo/geometry.h>
 #include <vlo/vo/options.h>
@@ -89,17 +89,13 @@ class VisualOdometry
 
 	// --- scale corrector interface ---
 	const VoFrameInfo& lastInfo() const;
-	/// Keypoints and descriptors of the last frame processed.
-	std::shared_ptr<const Features> currentFeatures() const;
-	/// Map point id per keypoint of the last frame (-1: none), empty when it was not tracked.
-	std::vector<long> currentPointIds() const;
 	VoState state() const;
 	LocalMapView localMap() const;
-	/// Scales the local window (keyframes of the last local BA, optimised and fixed, and their points)
-	/// by s about its earliest optimised keyframe, and the current pose and motion model with it; the
-	/// same similarity moves the rest of the map so that every observation stays consistent. The
+	/// Scales the whole map by s about the local window's earliest optimised keyframe (the window:
+	/// keyframes of the last local BA, optimised and fixed, and their points), with the current pose
+	/// and motion model, so that every observation stays consistent. The
 	/// output trajectory stays continuous (later motions are s times longer). False without a map.
-	bool rescaleLocalWindow(double s);
+	bool rescaleAboutWindow(double s);
 	/// Scales the whole current map about its origin (first keyframe), with the current pose and
 	/// motion model: for the metric scale right after initialisation (output stays continuous).
 	/// False without a map.

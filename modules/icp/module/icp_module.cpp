@@ -1,6 +1,6 @@
-// KISS-ICP's method (modules/icp) behind the pipeline's LidarOdometryModule interface.
+// KISS-ICP's method (modules/icp) as the LiDAR odometry module "icp".
 #include <vlo/icp/icp_odometry.h>
-#include <vlo/pipeline/lidar_odometry_module.h>
+#include <vlo/kernel/lidar_odometry.h>
 
 namespace vlo
 {
@@ -13,9 +13,6 @@ class IcpModule : public LidarOdometryModule
 	{
 		config.load(opt_, "icp");
 		odometry_ = std::make_unique<icp::IcpOdometry>(opt_);  // validates the options
-		// One sensor INI serves both LiDAR methods as it serves every mode: A-LOAM's sections (and the
-		// pipeline's own [loam.prior] default in mode vlo) are read and checked, not run.
-		lidarOdometryRegistry().create("aloam", "icp")->configure(config);
 	}
 
 	Eigen::Isometry3d process(
@@ -51,7 +48,6 @@ class IcpModule : public LidarOdometryModule
 	Eigen::Isometry3d vehicle_T_lidar_ = Eigen::Isometry3d::Identity();
 	bool rig_set_ = false;
 };
+VLO_REGISTER_MODULE(LidarOdometryModule, "icp", IcpModule);
 }  // namespace
-
-std::unique_ptr<LidarOdometryModule> makeIcpModule() { return std::make_unique<IcpModule>(); }
 }  // namespace vlo

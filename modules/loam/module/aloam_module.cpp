@@ -1,6 +1,6 @@
-// The A-LOAM reimplementation of modules/loam behind the pipeline's LidarOdometryModule interface.
+// The A-LOAM reimplementation of modules/loam as the LiDAR odometry module "aloam".
+#include <vlo/kernel/lidar_odometry.h>
 #include <vlo/loam/lidar_odometry.h>
-#include <vlo/pipeline/lidar_odometry_module.h>
 
 namespace vlo
 {
@@ -15,6 +15,9 @@ class AloamModule : public LidarOdometryModule
 		config.load(opt_.features, "loam.features");
 		config.load(opt_.odometry, "loam.odometry");
 		config.load(opt_.mapping, "loam.mapping");
+		// In a run the caller decides whether LOAM gets a guess ([pipeline] bootstrapping); with none,
+		// the external prior is constant velocity, as in A-LOAM. constant_velocity ignores any guess.
+		opt_.prior.source = "external";
 		config.load(opt_.prior, "loam.prior");
 		lo_ = std::make_unique<loam::LidarOdometry>(opt_);  // validates the options
 	}
@@ -58,16 +61,6 @@ class AloamModule : public LidarOdometryModule
 	Eigen::Isometry3d vehicle_T_lidar_ = Eigen::Isometry3d::Identity();
 	bool rig_set_ = false;
 };
+VLO_REGISTER_MODULE(LidarOdometryModule, "aloam", AloamModule);
 }  // namespace
-
-Registry<LidarOdometryModule>& lidarOdometryRegistry()
-{
-	static Registry<LidarOdometryModule> registry = [] {
-		Registry<LidarOdometryModule> r;
-		r.add("aloam", [] { return std::make_unique<AloamModule>(); });
-		r.add("icp", makeIcpModule);
-		return r;
-	}();
-	return registry;
-}
 }  // namespace vlo

@@ -4,7 +4,8 @@
 // in; this path instead chains each frame's camera motion once it is metric, and re-expresses the
 // frames of a fresh map in metres when its first scale arrives.
 #include <vlo/io/trajectory.h>
-#include <vlo/pipeline/visual_odometry_module.h>
+#include <vlo/kernel/scale_correction.h>
+#include <vlo/kernel/visual_odometry.h>
 
 #include <optional>
 #include <utility>
@@ -12,13 +13,6 @@
 
 namespace vlo
 {
-/// What the scale corrector did to the VO map at one frame.
-struct ScaleApplied
-{
-	double factor = 1.0;  ///< lengths measured before the correction times this are metric
-	bool initial = false;  ///< the first scale of a fresh map (setMapScale), else a drift correction
-};
-
 class MetricVoPath
 {
    public:
@@ -26,7 +20,7 @@ class MetricVoPath
 
 	/// Call once per frame, after the scale corrector acted on this frame. Returns the metric motion
 	/// of the vehicle since the previous frame (LOAM's initial guess) when it is known.
-	std::optional<Eigen::Isometry3d> update(double t, const VisualOdometryStep& step, const ScaleApplied& applied);
+	std::optional<Eigen::Isometry3d> update(double t, const MonocularState& step, const ScaleApplied& applied);
 
 	/// Vehicle poses relative to the vehicle where the first map began, metres.
 	const Trajectory& trajectory() const { return path_; }

@@ -1,5 +1,5 @@
 #include <vlo/core/error.h>
-#include <vlo/pipeline/run_config.h>
+#include <vlo/kernel/run_config.h>
 
 #include <cstdlib>
 #include <fstream>

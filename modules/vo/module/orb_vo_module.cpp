@@ -1,15 +1,15 @@
-// The ORB-SLAM2-style monocular VO of modules/vo behind the pipeline's VisualOdometryModule
-// interface ("orb"). Camera poses become vehicle poses through the rig's vehicle_T_camera.
+// The ORB-SLAM2-style monocular VO of modules/vo as the visual odometry module "orb". Camera poses
+// become vehicle poses through the rig's vehicle_T_camera.
 #include <opencv2/imgproc.hpp>
 #include <vlo/core/error.h>
-#include <vlo/pipeline/visual_odometry_module.h>
+#include <vlo/kernel/visual_odometry.h>
 #include <vlo/vo/visual_odometry.h>
 
 namespace vlo
 {
 namespace
 {
-class OrbVoModule : public VisualOdometryModule
+class OrbVoModule : public MonocularVisualOdometry
 {
    public:
 	void configure(RunConfig& config) override
@@ -59,25 +59,24 @@ class OrbVoModule : public VisualOdometryModule
 		step.tracked = info.pose.has_value();
 		if (info.pose) step.pose = toVehicle(*info.pose);
 		if (info.motion) step.motion = toVehicle(*info.motion);
-		step.camera_motion = info.motion;
-		step.camera_map_pose = info.map_pose;
-		step.new_map = info.new_map;
-		step.metric = info.metric;
+		mono_ = {info.motion, info.map_pose, info.new_map};
 		return step;
 	}
+
+	MonocularState monocular() const override { return mono_; }
 
 	bool rescale(double factor, bool whole_map) override
 	{
 		if (!vo_) return false;
-		return whole_map ? vo_->setMapScale(factor) : vo_->rescaleLocalWindow(factor);
+		return whole_map ? vo_->setMapScale(factor) : vo_->rescaleAboutWindow(factor);
 	}
 
    private:
 	vo::VoOptions opt_;
 	std::unique_ptr<vo::VisualOdometry> vo_;
 	Eigen::Isometry3d vehicle_T_camera_ = Eigen::Isometry3d::Identity();
+	MonocularState mono_;
 };
+VLO_REGISTER_MODULE(VisualOdometryModule, "orb", OrbVoModule);
 }  // namespace
-
-std::unique_ptr<VisualOdometryModule> makeOrbVisualOdometry() { return std::make_unique<OrbVoModule>(); }
 }  // namespace vlo

@@ -1,5 +1,5 @@
 #include <vlo/core/atomic_file.h>
-#include <vlo/pipeline/frame_table.h>
+#include <vlo/kernel/frame_table.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include <vlo/pipeline/metric_vo_path.h>
+#include "metric_vo_path.h"
 
 namespace vlo
 {
@@ -17,7 +17,7 @@ void MetricVoPath::push(double t, const Eigen::Isometry3d& camera_pose)
 	path_.push_back({t, toVehicle(camera_pose)});
 }
 
-std::optional<Eigen::Isometry3d> MetricVoPath::update(double t, const VisualOdometryStep& step, const ScaleApplied& applied)
+std::optional<Eigen::Isometry3d> MetricVoPath::update(double t, const MonocularState& step, const ScaleApplied& applied)
 {
 	if (step.new_map)
 	{

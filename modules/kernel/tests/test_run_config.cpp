@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileBase.h>
 #include <vlo/core/error.h>
-#include <vlo/pipeline/run_config.h>
+#include <vlo/kernel/run_config.h>
 
 using namespace vlo;
 

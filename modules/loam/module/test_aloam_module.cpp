@@ -1,0 +1,93 @@
+// The "aloam" module as the run loop sees it: created by name, configured from an INI, given the
+// vehicle's motion and returning the vehicle's pose, with the LiDAR mounted turned and offset on the
+// vehicle. A 4.5 m, 12 deg jump defeats the constant-velocity guess; the vehicle motion given as the
+// guess, moved into the LiDAR frame by the module, recovers it.
+#include <gtest/gtest.h>
+#include <vlo/kernel/lidar_odometry.h>
+
+#include "../tests/synthetic_world.h"
+#include "../tests/test_helpers.h"
+
+namespace vlo::loam::test
+{
+namespace
+{
+Eigen::Isometry3d yawMove(double x, double y, double yaw_deg)
+{
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	T.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+	T.translation() = Eigen::Vector3d(x, y, 0);
+	return T;
+}
+
+struct Drive
+{
+	Frame a, b;
+	Eigen::Isometry3d vehicle_motion;  ///< pose of the vehicle at b in the vehicle at a
+};
+
+/// Two scans of an urban world; the LiDAR looks to the vehicle's left, 0.5 m ahead, 1.8 m up.
+Drive drive()
+{
+	Path path;
+	path.add(80, 0.0);
+	const World w = urbanWorld(path, 9);
+	LidarModel m = hdl64();
+	m.noise_sigma = 0.01;
+	std::mt19937 rng(9);
+	const Eigen::Isometry3d Tvl = yawMove(0.5, 0.2, 90) * Eigen::Translation3d(0, 0, 1.8);
+	const Eigen::Isometry3d lidarMotion = yawMove(4.5, 0.4, 12);  // along the street, the LiDAR's x
+	const Eigen::Isometry3d A = lidarPoseAt(path, 25);
+	Drive d;
+	for (Frame* f : {&d.a, &d.b})
+	{
+		f->has_scan = true;
+		f->rig.has_lidar = true;
+		f->rig.vehicle_T_lidar = Tvl;
+	}
+	d.a.scan = scan(w, m, A, &rng);
+	d.b.scan = scan(w, m, A * lidarMotion, &rng);
+	d.b.index = 1;
+	d.b.t = 0.1;
+	d.vehicle_motion = Tvl * lidarMotion * Tvl.inverse();
+	return d;
+}
+
+/// The module's vehicle pose at the second frame, and the prior it says it used.
+std::pair<Eigen::Isometry3d, std::string> run(const Drive& d, const std::optional<Eigen::Isometry3d>& guess,
+	const std::vector<std::string>& sets = {})
+{
+	auto config = RunConfig::fromString("[loam.scan]\nring_model = hdl64\n", "test.ini", sets);
+	auto lo = registry<LidarOdometryModule>().create("aloam", "test");
+	lo->configure(config);
+	config.checkAllKeysUsed();
+	FrameTable table;
+	table.newRow();
+	lo->process(d.a, std::nullopt, table);
+	table.newRow();
+	const Eigen::Isometry3d pose = lo->process(d.b, guess, table);
+	return {pose, table.cell(1, "lo_prior")};
+}
+}  // namespace
+
+TEST(AloamModule, TakesTheVehicleMotionAsGuessAndReturnsTheVehiclePose)
+{
+	const Drive d = drive();
+	const Eigen::Isometry3d guess = d.vehicle_motion * yawMove(0.1, -0.05, 0.5);  // VO-like error
+	const auto [pose, prior] = run(d, guess);
+	EXPECT_EQ(prior, "external");
+	EXPECT_LT(translationError(pose, d.vehicle_motion), 0.01);
+	EXPECT_LT(rotationErrorDeg(pose, d.vehicle_motion), 0.05);
+}
+
+TEST(AloamModule, WithoutGuessOrWithConstantVelocityTheJumpIsMissed)
+{
+	const Drive d = drive();
+	const auto [none, priorNone] = run(d, std::nullopt);
+	EXPECT_EQ(priorNone, "constant_velocity");
+	EXPECT_GT(translationError(none, d.vehicle_motion), 0.05);
+	const auto [cv, priorCv] = run(d, d.vehicle_motion, {"loam.prior.source=constant_velocity"});
+	EXPECT_EQ(priorCv, "constant_velocity");  // told to ignore guesses
+	EXPECT_GT(translationError(cv, d.vehicle_motion), 0.05);
+}
+}  // namespace vlo::loam::test

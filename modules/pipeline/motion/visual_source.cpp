@@ -1,0 +1,38 @@
+// Motion source "visual": the visual odometry alone, in its own units. Metric for a stereo or RGB-D
+// VO; a monocular VO's map scale otherwise (mode vo, or a baseline without scale correction).
+#include <vlo/core/stopwatch.h>
+#include <vlo/kernel/motion_source.h>
+#include <vlo/kernel/visual_odometry.h>
+
+namespace vlo
+{
+namespace
+{
+class VisualSource : public MotionSource
+{
+   public:
+	void configure(RunConfig& config, const MotionSourceSetup& setup) override
+	{
+		vo_ = registry<VisualOdometryModule>().create(setup.visual_odometry, config.origin() + ": [pipeline] visual_odometry");
+		vo_->configure(config);
+	}
+
+	std::optional<Eigen::Isometry3d> process(const Frame& frame, FrameTable& table) override
+	{
+		auto t0 = SteadyClock::now();
+		const VisualOdometryStep step = vo_->process(frame, table);
+		table.set("ms_vo", lapMs(t0), 2);
+		if (step.pose) path_.push_back({frame.t, *step.pose});
+		return step.motion;
+	}
+
+	Trajectory trajectory() const override { return path_; }
+	std::string label() const override { return "visual odometry"; }
+
+   private:
+	std::unique_ptr<VisualOdometryModule> vo_;
+	Trajectory path_;
+};
+VLO_REGISTER_MODULE(MotionSource, "visual", VisualSource);
+}  // namespace
+}  // namespace vlo

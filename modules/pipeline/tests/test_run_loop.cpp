@@ -1,0 +1,322 @@
+// The run loop with fake modules registered by name: what runPipeline passes from the motion source
+// to the LiDAR odometry, what the metric monocular VO does with the scale corrector's factors, and
+// what lands in frames.csv and the trajectories. The fakes move the vehicle 0.5 m forward per frame.
+#include <gtest/gtest.h>
+#include <vlo/core/error.h>
+#include <vlo/io/rawlog_writer.h>
+#include <vlo/io/trajectory.h>
+#include <vlo/kernel/lidar_odometry.h>
+#include <vlo/kernel/scale_correction.h>
+#include <vlo/kernel/visual_odometry.h>
+#include <vlo/pipeline/run.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace vlo;
+
+namespace
+{
+constexpr int kFrames = 6;
+constexpr double kStep = 0.5;  ///< [m] the vehicle's true motion per frame
+
+/// What the fakes saw, reset by each test.
+struct Seen
+{
+	std::vector<std::optional<Eigen::Isometry3d>> lidar_guesses;
+	std::vector<long> scale_prev_index;  ///< index of the previous frame given to the corrector, -1 = none
+	std::vector<std::pair<double, bool>> rescales;  ///< (factor, whole_map) asked of the VO
+	int vo_frames = 0;
+};
+Seen seen;
+
+Eigen::Isometry3d forward(double metres)  ///< along the camera's z axis
+{
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	T.translation().z() = metres;
+	return T;
+}
+
+/// A monocular VO: lost at frame 0, makes a map at frame 1 in which one frame's 0.5 m is 1 unit, then
+/// tracks; rescale() multiplies its map's lengths.
+class FakeMonoVo : public MonocularVisualOdometry
+{
+   public:
+	void configure(RunConfig&) override {}
+	VisualOdometryStep process(const Frame& frame, FrameTable& table) override
+	{
+		++seen.vo_frames;
+		table.set("vo_fake", static_cast<long long>(frame.index));
+		state_ = {};
+		if (frame.index == 0) return {};
+		const double units = units_per_step_;
+		state_.new_map = frame.index == 1;
+		state_.camera_map_pose = forward(units * double(frame.index - 1));
+		if (frame.index >= 2) state_.camera_motion = forward(units);
+		VisualOdometryStep step;
+		step.tracked = true;
+		step.pose = forward(units * double(frame.index));  // not used by the metric VO
+		return step;
+	}
+	MonocularState monocular() const override { return state_; }
+	bool rescale(double factor, bool whole_map) override
+	{
+		seen.rescales.push_back({factor, whole_map});
+		units_per_step_ *= factor;
+		return true;
+	}
+
+   private:
+	MonocularState state_;
+	double units_per_step_ = 1.0;
+};
+VLO_REGISTER_MODULE(VisualOdometryModule, "fake_mono", FakeMonoVo);
+
+/// A metric VO (stereo-like): the vehicle's motion in metres from frame 1 on, nothing to rescale.
+class FakeStereoVo : public VisualOdometryModule
+{
+   public:
+	void configure(RunConfig&) override {}
+	VisualOdometryStep process(const Frame& frame, FrameTable&) override
+	{
+		VisualOdometryStep step;
+		step.tracked = true;
+		Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+		pose.translation().x() = kStep * double(frame.index);
+		step.pose = pose;
+		if (frame.index >= 1) step.motion = Eigen::Isometry3d(Eigen::Translation3d(kStep, 0, 0));
+		return step;
+	}
+};
+VLO_REGISTER_MODULE(VisualOdometryModule, "fake_stereo", FakeStereoVo);
+
+/// Metric scale 0.5 at the first estimate (frame 2), a 10 % drift correction at frame 4.
+class FakeScale : public ScaleCorrectionModule
+{
+   public:
+	void configure(RunConfig&, int) override {}
+	ScaleApplied process(const Frame* prev, const Frame& cur, const MonocularState& vo, const Rescale& rescale,
+		FrameTable& table) override
+	{
+		seen.scale_prev_index.push_back(prev ? long(prev->index) : -1);
+		table.set("scale_fake", vo.camera_motion.has_value());
+		if (cur.index == 2 && rescale(0.5, true)) return {0.5, true};
+		if (cur.index == 4 && rescale(1.1, false)) return {1.1, false};
+		return {};
+	}
+	std::vector<std::pair<std::string, double>> figures() const override { return {{"fake_figure", 42}}; }
+};
+VLO_REGISTER_MODULE(ScaleCorrectionModule, "fake_scale", FakeScale);
+
+/// Follows the truth; records the guesses it is given.
+class FakeLidar : public LidarOdometryModule
+{
+   public:
+	void configure(RunConfig&) override {}
+	Eigen::Isometry3d process(
+		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	{
+		seen.lidar_guesses.push_back(vehicle_motion);
+		table.set("lo_fake", static_cast<long long>(frame.scan.size()));
+		return Eigen::Isometry3d(Eigen::Translation3d(kStep * double(frame.index), 0, 0));
+	}
+};
+VLO_REGISTER_MODULE(LidarOdometryModule, "fake_lidar", FakeLidar);
+
+/// Camera looking along the vehicle's x axis (z forward, x right, y down), with a lever arm.
+SensorRig rig()
+{
+	SensorRig r;
+	r.has_camera = r.has_lidar = true;
+	r.camera.fx = r.camera.fy = 20;
+	r.camera.cx = 16;
+	r.camera.cy = 12;
+	r.camera.width = 32;
+	r.camera.height = 24;
+	r.vehicle_T_camera.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+	r.vehicle_T_camera.translation() << 1.5, 0.1, 1.6;
+	r.vehicle_T_lidar.translation() << 0.3, 0, 1.8;
+	return r;
+}
+
+class RunLoop : public ::testing::Test
+{
+   protected:
+	void SetUp() override
+	{
+		seen = {};
+		// One folder per test: ctest -j runs the tests of this file side by side.
+		dir_ = std::filesystem::absolute(std::string("run_loop_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+		std::filesystem::remove_all(dir_);
+		std::filesystem::create_directories(dir_);
+		RawlogWriter w(dir_ + "/drive.rawlog", false);
+		for (int i = 0; i < kFrames; ++i)
+		{
+			Frame f;
+			f.index = std::size_t(i);
+			f.t = 0.1 * i;
+			f.has_image = f.has_scan = true;
+			f.image = mrpt::img::CImage(32, 24, mrpt::img::CH_GRAY);
+			f.image.filledRectangle(0, 0, 31, 23, mrpt::img::TColor(100, 100, 100));
+			f.scan = {{5.f, 0.f, 0.f, 1.f}, {0.f, 5.f, 0.f, 1.f}, {5.f, 5.f, 1.f, 1.f}};
+			f.rig = rig();
+			w.writeFrame(f);
+		}
+		w.commit();
+	}
+	void TearDown() override { std::filesystem::remove_all(dir_); }
+
+	RunSummary run(const std::vector<std::string>& sets)
+	{
+		std::ofstream(dir_ + "/run.ini") << "[pipeline]\nvisual_odometry = fake_mono\nscale_correction = fake_scale\n"
+											"lidar_odometry = fake_lidar\nsnapshots = false\nmap_every = 0\n";
+		return runPipeline({dir_ + "/drive.rawlog", dir_ + "/run.ini", dir_ + "/out", sets, ""});
+	}
+
+	/// The message of the InputError the run stops with ("" when it does not).
+	std::string runError(const std::vector<std::string>& sets)
+	{
+		try
+		{
+			run(sets);
+		}
+		catch (const InputError& e)
+		{
+			return e.what();
+		}
+		return "";
+	}
+
+	std::string out(const std::string& name) const { return dir_ + "/out/" + name; }
+	std::string dir_;
+};
+
+std::vector<std::string> split(const std::string& line)
+{
+	std::vector<std::string> cells;
+	std::stringstream ls(line);
+	for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
+	return cells;
+}
+
+std::vector<std::string> header(const std::string& csv)
+{
+	std::ifstream in(csv);
+	std::string line;
+	std::getline(in, line);
+	return split(line);
+}
+
+/// Cells of one column of a CSV without quoted commas (the fakes write none).
+std::vector<std::string> column(const std::string& csv, const std::string& name)
+{
+	const auto names = header(csv);
+	const auto at = std::find(names.begin(), names.end(), name) - names.begin();
+	EXPECT_LT(std::size_t(at), names.size()) << "no column " << name;
+	std::ifstream in(csv);
+	std::string line;
+	std::getline(in, line);
+	std::vector<std::string> cells;
+	while (std::getline(in, line))
+	{
+		std::stringstream ls(line);
+		std::string c;
+		for (long k = 0; k <= at; ++k) std::getline(ls, c, ',');
+		cells.push_back(c);
+	}
+	return cells;
+}
+}  // namespace
+
+TEST_F(RunLoop, MetricMonoVoGivesTheLidarOdometryTheScaledMotionInVehicleAxes)
+{
+	const RunSummary s = run({"pipeline.mode=vlo"});
+	EXPECT_EQ(s.frames, std::size_t(kFrames));
+	// The corrector sees the previous frame (none at the first) and asks the VO, not the loop, to rescale.
+	EXPECT_EQ(seen.scale_prev_index, (std::vector<long>{-1, 0, 1, 2, 3, 4}));
+	ASSERT_EQ(seen.rescales.size(), 2u);
+	EXPECT_EQ(seen.rescales[0], std::make_pair(0.5, true));
+	EXPECT_EQ(seen.rescales[1], std::make_pair(1.1, false));
+	// Guesses: none before the first scale; then 0.5 m along the vehicle's x (camera z; the lever
+	// arm cancels), 1.1 x 0.5 m from the correction on.
+	ASSERT_EQ(seen.lidar_guesses.size(), std::size_t(kFrames));
+	EXPECT_FALSE(seen.lidar_guesses[0]);
+	EXPECT_FALSE(seen.lidar_guesses[1]);
+	const double expected[] = {0, 0, 0.5, 0.5, 0.55, 0.55};
+	for (int i = 2; i < kFrames; ++i)
+	{
+		ASSERT_TRUE(seen.lidar_guesses[i]) << i;
+		EXPECT_NEAR(seen.lidar_guesses[i]->translation().x(), expected[i], 1e-12) << i;
+		EXPECT_NEAR(seen.lidar_guesses[i]->translation().norm(), expected[i], 1e-12) << i;
+	}
+	EXPECT_EQ(column(out("frames.csv"), "vo_metric_motion"), (std::vector<std::string>{"0", "0", "1", "1", "1", "1"}));
+	EXPECT_EQ(column(out("frames.csv"), "x"), (std::vector<std::string>{"0.000", "0.500", "1.000", "1.500", "2.000", "2.500"}));
+	EXPECT_EQ(column(out("frames.csv"), "lo_fake"), std::vector<std::string>(kFrames, "3"));
+	// The scale-corrected VO: frames 1-2 re-expressed at the first scale, then chained.
+	const Trajectory vo = readTum(out("trajectory_vo.tum"));
+	ASSERT_EQ(vo.size(), 5u);
+	const double voX[] = {0, 0.5, 1.0, 1.55, 2.1};
+	for (int k = 0; k < 5; ++k) EXPECT_NEAR(vo[k].pose.translation().x(), voX[k], 1e-6) << k;
+	EXPECT_EQ(readTum(out("trajectory_vlo.tum")).size(), std::size_t(kFrames));
+	EXPECT_EQ(s.final_trajectory, "trajectory_vlo.tum");
+	ASSERT_EQ(s.figures.size(), 1u);
+	EXPECT_EQ(s.figures[0].first, "fake_figure");
+}
+
+TEST_F(RunLoop, BootstrappingOffLeavesTheLidarOdometryToItself)
+{
+	run({"pipeline.mode=vlo", "pipeline.bootstrapping=false"});
+	ASSERT_EQ(seen.lidar_guesses.size(), std::size_t(kFrames));
+	for (const auto& g : seen.lidar_guesses) EXPECT_FALSE(g);
+	// The motion source still runs: its column says when a guess would have been there.
+	EXPECT_EQ(column(out("frames.csv"), "vo_metric_motion"), (std::vector<std::string>{"0", "0", "1", "1", "1", "1"}));
+}
+
+TEST_F(RunLoop, ModeLoRunsNoVisualOdometryAndModeVoNoLidarOdometry)
+{
+	const RunSummary lo = run({"pipeline.mode=lo"});
+	EXPECT_EQ(seen.vo_frames, 0);
+	EXPECT_EQ(seen.lidar_guesses.size(), std::size_t(kFrames));
+	for (const auto& g : seen.lidar_guesses) EXPECT_FALSE(g);
+	EXPECT_EQ(lo.final_trajectory, "trajectory_lo.tum");
+	EXPECT_FALSE(std::filesystem::exists(out("trajectory_vo.tum")));
+	EXPECT_EQ(header(out("frames.csv")), (std::vector<std::string>{"frame", "t", "lo_fake", "x", "y", "z", "ms_total"}));
+
+	seen = {};
+	std::filesystem::remove_all(out(""));
+	const RunSummary vo = run({"pipeline.mode=vo"});
+	EXPECT_EQ(seen.vo_frames, kFrames);
+	EXPECT_TRUE(seen.lidar_guesses.empty());
+	EXPECT_TRUE(seen.rescales.empty());  // the VO alone: no scale correction
+	EXPECT_EQ(vo.final_trajectory, "trajectory_vo.tum");
+	const Trajectory t = readTum(out("trajectory_vo.tum"));
+	ASSERT_EQ(t.size(), std::size_t(kFrames - 1));  // not tracked at frame 0
+	EXPECT_NEAR(t.back().pose.translation().z(), 5.0, 1e-6);  // the VO's own pose, map units
+}
+
+TEST_F(RunLoop, AMetricVoNeedsNoScaleCorrection)
+{
+	run({"pipeline.mode=vlo", "pipeline.motion_source=visual", "pipeline.visual_odometry=fake_stereo"});
+	ASSERT_EQ(seen.lidar_guesses.size(), std::size_t(kFrames));
+	EXPECT_FALSE(seen.lidar_guesses[0]);
+	for (int i = 1; i < kFrames; ++i)
+	{
+		ASSERT_TRUE(seen.lidar_guesses[i]);
+		EXPECT_DOUBLE_EQ(seen.lidar_guesses[i]->translation().x(), kStep);
+	}
+	EXPECT_TRUE(seen.scale_prev_index.empty());
+}
+
+TEST_F(RunLoop, BadModuleNamesAreInputErrors)
+{
+	EXPECT_NE(runError({"pipeline.lidar_odometry=nope"}).find("[pipeline] lidar_odometry: unknown module 'nope'"),
+		std::string::npos);
+	EXPECT_NE(runError({"pipeline.motion_source=nope"}).find("known: metric_mono, visual"), std::string::npos);
+	EXPECT_NE(runError({"pipeline.scale_correction=nope"}).find("[pipeline] scale_correction: unknown module"),
+		std::string::npos);  // in mode lo too, which runs no scale correction
+	EXPECT_NE(runError({"pipeline.mode=vlo", "pipeline.visual_odometry=fake_stereo"}).find("'fake_stereo' is not a monocular VO"),
+		std::string::npos);
+	EXPECT_FALSE(std::filesystem::exists(out("frames.csv")));
+}

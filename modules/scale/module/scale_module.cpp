@@ -1,0 +1,150 @@
+// The paper's scale corrector (modules/scale) as the scale-correction module "lidar_depth": per
+// frame, the estimate from C(i-1), L(i-1), C(i) and the VO's camera motion, the policy's decision,
+// the rescaling through the caller, the scale_* columns of frames.csv, and its snapshots.
+#include <vlo/kernel/scale_correction.h>
+#include <vlo/scale/overlay.h>
+#include <vlo/scale/policy.h>
+#include <vlo/scale/scale_corrector.h>
+#include <vlo/viz/projected_scan.h>
+#include <vlo/viz/series.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+namespace vlo
+{
+namespace
+{
+struct ScaleSnapshot
+{
+	Frame prev;  ///< C(i-1) and L(i-1), deep copies
+	std::size_t cur_index = 0;
+	scale::ScaleEstimate estimate;
+};
+
+class LidarDepthScaleModule : public ScaleCorrectionModule
+{
+   public:
+	void configure(RunConfig& config, int snapshot_every) override
+	{
+		snapshot_every_ = snapshot_every;
+		config.load(opt_, "scale");
+		corrector_ = std::make_unique<scale::ScaleCorrector>(opt_);  // validates the options
+		policy_ = std::make_unique<scale::ScaleCorrectionPolicy>(opt_);
+	}
+
+	ScaleApplied process(
+		const Frame* prev, const Frame& cur, const MonocularState& vo, const Rescale& rescale, FrameTable& table) override
+	{
+		if (vo.new_map) policy_->reset();  // a fresh map has an arbitrary scale again
+		ScaleApplied applied;
+		if (!vo.camera_motion || !prev || !prev->has_scan || !prev->has_image)
+		{
+			table.set("scale_decision", std::string(vo.camera_motion ? "no previous scan" : "no VO motion"));
+			return applied;
+		}
+		// The estimator wants T_{C(i-1)}^{C(i)}; the VO gives the current camera in the previous one.
+		const scale::ScaleEstimate e = corrector_->estimate(*prev, cur, vo.camera_motion->inverse());
+		++estimates_;
+		valid_ += e.valid ? 1 : 0;
+		const scale::ScaleDecision d = policy_->decide(e);
+		std::string decision = scale::toString(d.kind);
+		if (d.apply())
+		{
+			const bool initial = d.kind == scale::ScaleDecision::Kind::Initial;
+			if (rescale(d.factor, initial))
+			{
+				applied = {d.factor, initial};
+				corrections_ += initial ? 0 : 1;
+			}
+			else
+			{
+				policy_->reset();  // the VO had nothing to scale: try again at the next estimate
+				decision = "not applied (no VO map)";
+			}
+		}
+		else
+			decision += std::string(": ") + d.why;
+		writeColumns(e, decision, applied, table);
+		// Estimates once the map is metric (the initial one says how long a map unit was: off the plot).
+		const bool initial = d.kind == scale::ScaleDecision::Kind::Initial;
+		history_.t.push_back(cur.t);
+		history_.estimate.push_back(e.valid && !initial ? e.scale : std::nan(""));
+		history_.correction.push_back(applied.factor != 1.0 && !applied.initial ? applied.factor : std::nan(""));
+		if (snapshot_every_ > 0 && cur.index % snapshot_every_ == 0)
+		{
+			Frame copy = *prev;
+			copy.image = prev->image.makeDeepCopy();
+			snapshots_.push_back({std::move(copy), cur.index, e});
+		}
+		return applied;
+	}
+
+	void writeSnapshots(const std::string& dir) const override
+	{
+		const auto finite = [](double v) { return std::isfinite(v); };
+		if (std::any_of(history_.estimate.begin(), history_.estimate.end(), finite))
+		{
+			SeriesStyle style;
+			style.title = "scale estimates of the metric VO map (1 = no drift)";
+			style.ylabel = "scale";
+			style.reference_y = 1.0;
+			renderSeries({{"estimate s", history_.t, history_.estimate, std::nullopt, true, false},
+							 {"correction applied", history_.t, history_.correction, std::nullopt, true, false}},
+				dir + "/scale.png", style);
+		}
+		for (const auto& snap : snapshots_)
+		{
+			const auto& e = snap.estimate;
+			ProjectedScanStyle ps;
+			char title[160];
+			std::snprintf(title, sizeof(title), "C(%zu)->C(%zu): s %.3f, %d of %d inliers (%s)", snap.prev.index,
+				snap.cur_index, e.scale, e.counts.inliers, e.counts.triangulated, scale::toString(e.reason));
+			ps.title = title;
+			char name[64];
+			std::snprintf(name, sizeof(name), "/scale_%06zu.png", snap.cur_index);
+			renderProjectedScan(snap.prev.image, snap.prev.scan, snap.prev.rig, dir + name, scale::scaleOverlay(e), ps);
+		}
+	}
+
+	std::vector<std::pair<std::string, double>> figures() const override
+	{
+		return {{"scale_estimates", double(estimates_)}, {"scale_valid", double(valid_)},
+			{"scale_corrections", double(corrections_)}};
+	}
+
+   private:
+	void writeColumns(
+		const scale::ScaleEstimate& e, const std::string& decision, const ScaleApplied& applied, FrameTable& table) const
+	{
+		table.set("scale_reason", std::string(scale::toString(e.reason)));
+		table.set("scale_s", e.scale, 4);
+		table.set("scale_spread", e.spread, 4);
+		table.set("scale_projected", static_cast<long long>(e.counts.projected));
+		table.set("scale_selected", static_cast<long long>(e.counts.selected));
+		table.set("scale_tracked", static_cast<long long>(e.counts.tracked));
+		table.set("scale_culled_kept", static_cast<long long>(e.counts.gradient_kept));
+		table.set("scale_triangulated", static_cast<long long>(e.counts.triangulated));
+		table.set("scale_inliers", static_cast<long long>(e.counts.inliers));
+		table.set("scale_decision", decision);
+		table.set("scale_applied", applied.factor, 4);
+		table.set("scale_cumulative", policy_->cumulative(), 4);
+		table.set("ms_scale", e.ms.total, 2);
+	}
+
+	scale::ScaleOptions opt_;
+	std::unique_ptr<scale::ScaleCorrector> corrector_;
+	std::unique_ptr<scale::ScaleCorrectionPolicy> policy_;
+	int snapshot_every_ = 0;
+	std::vector<ScaleSnapshot> snapshots_;
+	struct
+	{
+		std::vector<double> t, estimate, correction;  ///< per frame with an estimate (NaN: none)
+	} history_;
+	int estimates_ = 0, valid_ = 0, corrections_ = 0;
+};
+VLO_REGISTER_MODULE(ScaleCorrectionModule, "lidar_depth", LidarDepthScaleModule);
+}  // namespace
+}  // namespace vlo

@@ -1,0 +1,77 @@
+// The "orb" module as the run loop sees it: created by name, configured from an INI, it turns the
+// camera's motion into the vehicle's (V = Tvc C Tvc^-1), leaving the metric lever arm out until the
+// map has a metric scale, and rescales its map on the scale corrector's request.
+#include <gtest/gtest.h>
+#include <vlo/kernel/visual_odometry.h>
+
+#include "../tests/vo_test_util.h"
+
+using namespace vlo;
+
+namespace
+{
+/// Camera looking along the vehicle's x axis (optical z), pitched 5 deg down, 1.2 m ahead and 1.7 m up.
+Eigen::Isometry3d vehicleTcamera()
+{
+	return Eigen::Translation3d(1.2, -0.3, 1.7) * Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitZ()) *
+		Eigen::AngleAxisd(-M_PI / 2 - 5 * M_PI / 180, Eigen::Vector3d::UnitX());
+}
+
+struct Drive
+{
+	std::unique_ptr<MonocularVisualOdometry> vo;
+	PinholeCamera cam = vo::test::kittiCamera();
+	vo::test::StreetRenderer renderer{vo::test::StreetScene(), cam};
+	FrameTable table;
+	int k = 0;
+
+	Drive()
+	{
+		auto config = RunConfig::fromString("[vo.orb]\nn_features = 1500\n", "test.ini");
+		vo.reset(dynamic_cast<MonocularVisualOdometry*>(registry<VisualOdometryModule>().create("orb", "test").release()));
+		vo->configure(config);
+		config.checkAllKeysUsed();
+	}
+
+	VisualOdometryStep next()
+	{
+		Frame f;
+		f.index = std::size_t(k);
+		f.t = 0.1 * k;
+		f.has_image = true;
+		f.rig.has_camera = true;
+		f.rig.camera = cam;
+		f.rig.vehicle_T_camera = vehicleTcamera();
+		f.image = mrpt::img::CImage(renderer.render(vo::test::drivePose(k++)), mrpt::img::DEEP_COPY);
+		table.newRow();
+		return vo->process(f, table);
+	}
+};
+
+double gap(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) { return (a.matrix() - b.matrix()).norm(); }
+}  // namespace
+
+TEST(OrbVoModule, VehicleMotionIsTheCameraMotionInVehicleAxesWithTheLeverArmOnceMetric)
+{
+	Drive d;
+	ASSERT_NE(d.vo, nullptr);  // "orb" is a monocular VO
+	EXPECT_FALSE(d.vo->rescale(2.0, true));  // no map yet
+	VisualOdometryStep step;
+	for (int i = 0; i < 10 && !d.vo->monocular().new_map; ++i) step = d.next();
+	ASSERT_TRUE(d.vo->monocular().new_map);
+	step = d.next();
+	ASSERT_TRUE(step.motion && d.vo->monocular().camera_motion);
+	const Eigen::Isometry3d C = *d.vo->monocular().camera_motion;
+	Eigen::Isometry3d R = vehicleTcamera();
+	R.translation().setZero();
+	EXPECT_LT(gap(*step.motion, R * C * R.inverse()), 1e-9);  // map units: rotation only
+	EXPECT_EQ(d.table.cell(d.table.rows() - 1, "vo_metric"), "0");
+
+	ASSERT_TRUE(d.vo->rescale(1.0, true));  // the map is metric from now on
+	step = d.next();
+	ASSERT_TRUE(step.motion && d.vo->monocular().camera_motion);
+	const Eigen::Isometry3d Tvc = vehicleTcamera();
+	EXPECT_LT(gap(*step.motion, Tvc * *d.vo->monocular().camera_motion * Tvc.inverse()), 1e-9);
+	EXPECT_EQ(d.table.cell(d.table.rows() - 1, "vo_metric"), "1");
+	EXPECT_FALSE(d.vo->monocular().new_map);
+}

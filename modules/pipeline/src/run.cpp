@@ -13,12 +13,26 @@
 #include <vlo/pipeline/run.h>
 #include <vlo/pipeline/run_outputs.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 
 namespace vlo
 {
 namespace
 {
+/// Fails early when the output folder could not be made, without making it: it is created only once
+/// the run has something to write, so bad input or Ctrl-C leaves no empty folder behind.
+void checkOutputDir(const std::string& dir)
+{
+	namespace fs = std::filesystem;
+	std::error_code ec;
+	fs::path p = fs::absolute(dir, ec);
+	while (!p.empty() && !fs::exists(p, ec) && p != p.parent_path()) p = p.parent_path();
+	if (!fs::is_directory(p, ec)) failInput(dir, "cannot create output folder (" + p.string() + " is not a folder)");
+	if (::access(p.c_str(), W_OK) != 0) failInput(dir, "cannot create output folder (" + p.string() + " is not writable)");
+}
+
 void prepareOutputDir(const std::string& dir)
 {
 	std::error_code ec;
@@ -77,7 +91,7 @@ RunSummary runPipeline(const RunRequest& req)
 	popt.validate(config.origin());
 	const RunPlan plan = popt.plan();
 	Stages stages = makeStages(popt, plan, config);
-	prepareOutputDir(req.out);
+	checkOutputDir(req.out);
 
 	RawlogReaderOptions ropt;
 	ropt.camera_label = popt.camera_label;
@@ -127,8 +141,12 @@ RunSummary runPipeline(const RunRequest& req)
 	progress.finish();
 	const double loopSeconds = msSince(loopStart) / 1000.0;
 	if (outputs.table.rows() == 0) failInput(req.rawlog, "no frame to process");
+	if (!plan.lidar_odometry && (!stages.motion || stages.motion->trajectory().empty()))
+		failInput(req.rawlog, "the visual odometry never initialised in " + std::to_string(outputs.table.rows()) +
+				" frames: no trajectory to write (too few frames, or too little texture or motion)");
 
 	outputs.map = globalMap.points();
+	prepareOutputDir(req.out);
 	RunSummary summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);
 	summary.frames = outputs.table.rows();
 	summary.seconds = loopSeconds;

@@ -53,6 +53,32 @@ void checkValueType(const std::string& origin, const std::string& section, const
 		if (!parsesAs(u, false)) failInput(where, "expects a number, got '" + u + "'");
 	}
 }
+/// A file the user gives as an INI must look like one: text, every line a comment, a [section], a
+/// key = value inside a section, or an MRPT @directive; and at least one section.
+void checkIniSyntax(const std::string& text, const std::string& path)
+{
+	if (text.find('\0') != std::string::npos) failInput(path, "not an INI file (binary content)");
+	std::istringstream in(text);
+	std::string line;
+	bool section = false;
+	for (int n = 1; std::getline(in, line); ++n)
+	{
+		const std::string t = trim(line);
+		const std::string where = path + ": line " + std::to_string(n);
+		if (t.empty() || t[0] == '#' || t[0] == ';' || t.rfind("//", 0) == 0 || t[0] == '@') continue;
+		if (t[0] == '[')
+		{
+			if (t.back() != ']' || t.size() < 3) failInput(where, "malformed section header '" + t + "'");
+			section = true;
+			continue;
+		}
+		const auto eq = t.find('=');
+		if (eq == std::string::npos || trim(t.substr(0, eq)).empty())
+			failInput(where, "'" + t.substr(0, 60) + "' is not 'key = value', a [section] or a comment: is this an INI file?");
+		if (!section) failInput(where, "'" + t.substr(0, 60) + "' comes before any [section]");
+	}
+	if (!section) failInput(path, "no [section] in the file: is this an INI file? (see ini/ for examples)");
+}
 }  // namespace
 
 RunConfig RunConfig::fromFile(const std::string& path, const std::vector<std::string>& overrides)
@@ -61,7 +87,21 @@ RunConfig RunConfig::fromFile(const std::string& path, const std::vector<std::st
 	if (!in) failInput(path, "cannot open INI file");
 	std::stringstream ss;
 	ss << in.rdbuf();
-	return fromString(ss.str(), path, overrides);
+	checkIniSyntax(ss.str(), path);
+	try
+	{
+		return fromString(ss.str(), path, overrides);
+	}
+	catch (const InputError&)
+	{
+		throw;
+	}
+	catch (const std::exception& e)  // MRPT's own parser (e.g. an unclosed ${...}) names no file
+	{
+		std::string msg = e.what();
+		msg = msg.substr(0, msg.find('\n'));
+		failInput(path, "not a valid INI file: " + msg);
+	}
 }
 
 RunConfig RunConfig::fromString(const std::string& ini, const std::string& origin, const std::vector<std::string>& overrides)

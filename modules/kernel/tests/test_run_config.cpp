@@ -3,6 +3,8 @@
 #include <vlo/core/error.h>
 #include <vlo/kernel/run_config.h>
 
+#include <fstream>
+
 using namespace vlo;
 
 namespace
@@ -88,4 +90,29 @@ TEST(RunConfig, RejectsUnknownSectionKeyAndBadValues)
 		EXPECT_NE(err.find("a.ini: [demo]"), std::string::npos) << bad;
 	}
 	EXPECT_FALSE(errorOf([] { RunConfig::fromString("", "a.ini", {"nodot=1"}); }).empty());
+}
+
+TEST(RunConfig, FilesThatAreNotIniAreRefusedNamingTheFile)
+{
+	const std::string dir = ::testing::TempDir();
+	const auto errorFor = [&](const std::string& name, const std::string& content) {
+		const std::string path = dir + "/" + name;
+		std::ofstream(path, std::ios::binary) << content;
+		return errorOf([&] { RunConfig::fromFile(path); });
+	};
+	const auto expectError = [&](const std::string& name, const std::string& content, const std::string& text) {
+		const std::string e = errorFor(name, content);
+		EXPECT_NE(e.find(dir + "/" + name), std::string::npos) << e;
+		EXPECT_NE(e.find(text), std::string::npos) << e;
+		EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+	};
+	expectError("empty.ini", "", "no [section]");
+	expectError("comments.ini", "# only a comment\n\n", "no [section]");
+	expectError("readme.md", "# vlo\n\nSome text here.\n", "line 3: 'Some text here.' is not 'key = value'");
+	expectError("tum.txt", "0.0 1 2 3 0 0 0 1\n", "line 1");
+	expectError("before.ini", "mode = vlo\n[pipeline]\n", "line 1: 'mode = vlo' comes before any [section]");
+	expectError("noeq.ini", "[pipeline]\nmode vlo\n", "line 2: 'mode vlo' is not 'key = value'");
+	expectError("binary.ini", std::string("[a]\nk = 1\n\0\x01\x02", 11), "binary content");
+	expectError("header.ini", "[pipeline\nmode = vlo\n", "line 1: malformed section header");
+	EXPECT_EQ(errorFor("good.ini", "# c\n; c\n[pipeline]\nmode = vlo  # why\n@define X 3\n"), "");
 }

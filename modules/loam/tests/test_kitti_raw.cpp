@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "kitti_data.h"
 #include "test_helpers.h"
 
 namespace vlo::loam::test

@@ -13,6 +13,7 @@
 #include <map>
 #include <sstream>
 
+#include "kitti_data.h"
 #include "test_helpers.h"
 
 namespace vlo::loam::test

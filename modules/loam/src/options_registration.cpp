@@ -59,6 +59,7 @@ void OdometryOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
 	VLO_NUM(nearby_rings, int);
 	VLO_BOOL(use_kdtree);
 	VLO_NUM(min_correspondences, int);
+	VLO_NUM(max_rounds, int);
 }
 
 void OdometryOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -69,6 +70,7 @@ void OdometryOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const s
 	MRPT_SAVE_CONFIG_VAR_COMMENT(nearby_rings, "rings searched on each side for line/plane points");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(use_kdtree, "first neighbour from a kd-tree (A-LOAM) instead of the rings near the query");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(min_correspondences, "fewer: keep the initial guess");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(max_rounds, "rounds continue past outer_iterations while the pose still moves, up to this many");
 }
 
 void OdometryOptions::validate() const
@@ -78,6 +80,7 @@ void OdometryOptions::validate() const
 	require(max_match_distance > 0, s, "max_match_distance", "must be > 0");
 	require(nearby_rings >= 1, s, "nearby_rings", "must be >= 1");
 	require(min_correspondences >= 6, s, "min_correspondences", "must be >= 6");
+	require(max_rounds >= solver.outer_iterations, s, "max_rounds", "must be >= outer_iterations");
 }
 
 void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "kitti_data.h"
 #include "test_helpers.h"
 
 namespace vlo::loam::test
@@ -16,26 +17,12 @@ namespace
 {
 namespace fs = std::filesystem;
 
-PointCloud readKittiBin(const fs::path& file)
-{
-	std::ifstream in(file, std::ios::binary);
-	PointCloud pc;
-	float v[4];
-	while (in.read(reinterpret_cast<char*>(v), sizeof v)) pc.push_back(LidarPoint{v[0], v[1], v[2], v[3]});
-	return pc;
-}
-
 // The scans, unpacked once into the build tree (xz takes a few seconds).
 fs::path kittiScans()
 {
-	const fs::path archive = fs::path(VLO_SHARED_DATA) / "kitti_raw_2011_09_26_sample.tar.xz";
-	const fs::path dir = fs::path(VLO_BIN_DIR) / ".." / "test_data" / "loam";
-	const fs::path scans = dir / "kitti_raw_2011_09_26_sample" / "velodyne_points" / "data";
-	if (fs::exists(scans / "0000000031.bin") || !fs::exists(archive)) return scans;
-	fs::create_directories(dir);
-	const std::string cmd = "tar -xJf '" + archive.string() + "' -C '" + dir.string() + "' --wildcards '*velodyne_points*'";
-	if (std::system(cmd.c_str()) != 0) ADD_FAILURE() << cmd;
-	return scans;
+	return sharedData("kitti_raw_2011_09_26_sample.tar.xz", "kitti_raw_2011_09_26_sample", "'*velodyne_points*'",
+			   "velodyne_points/data/0000000031.bin") /
+		"velodyne_points" / "data";
 }
 }  // namespace
 

@@ -35,6 +35,7 @@ TEST(Options, SaveThenLoadRoundTrips)
 	a.features.max_flat = 7;
 	a.odometry.solver.loss = "cauchy";
 	a.odometry.use_kdtree = true;
+	a.odometry.max_rounds = 12;
 	a.mapping.solver.outer_iterations = 3;
 	a.mapping.map_radius = 77.5;
 	a.prior.source = "external";
@@ -52,6 +53,7 @@ TEST(Options, SaveThenLoadRoundTrips)
 	EXPECT_EQ(b.features.max_flat, 7);
 	EXPECT_EQ(b.odometry.solver.loss, "cauchy");
 	EXPECT_TRUE(b.odometry.use_kdtree);
+	EXPECT_EQ(b.odometry.max_rounds, 12);
 	EXPECT_EQ(b.mapping.solver.outer_iterations, 3);
 	EXPECT_DOUBLE_EQ(b.mapping.map_radius, 77.5);
 	EXPECT_EQ(b.prior.source, "external");
@@ -78,6 +80,9 @@ TEST(Options, BadValuesNameSectionAndKey)
 	EXPECT_NE(errorOf("[loam.scan]\nmin_range = abc\n").find("[loam.scan] min_range"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.features]\nn_sectors = 2.5\n").find("n_sectors"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.odometry]\nenabled = maybe\n").find("enabled"), std::string::npos);
+	EXPECT_NE(errorOf("[loam.odometry]\nmax_rounds = 1\n").find("[loam.odometry] max_rounds: must be >= outer_iterations"),
+		std::string::npos);
+	EXPECT_NE(errorOf("[loam.odometry]\nmax_rounds = many\n").find("max_rounds"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.mapping]\nloss = tukey\n").find("[loam.mapping] loss"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.mapping]\nvoxel_size = 1.0\n").find("voxel_size"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.scan]\nmax_range = 1\n").find("max_range"), std::string::npos);

@@ -81,6 +81,9 @@ struct OdometryOptions : public mrpt::config::CLoadableOptions
 	int nearby_rings = 2;  ///< rings searched on each side for the second/third point
 	bool use_kdtree = false;  ///< first neighbour from a kd-tree (A-LOAM) instead of the ring index
 	int min_correspondences = 20;  ///< fewer: keep the initial guess
+	/// Rounds go on past solver.outer_iterations while a round still moves the pose (a guess far
+	/// from the motion: a cold start at speed, a gap), up to this many in all.
+	int max_rounds = 30;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;

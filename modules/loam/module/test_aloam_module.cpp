@@ -82,11 +82,14 @@ TEST(AloamModule, TakesTheVehicleMotionAsGuessAndReturnsTheVehiclePose)
 
 TEST(AloamModule, WithoutGuessOrWithConstantVelocityTheJumpIsMissed)
 {
+	// With A-LOAM's own two scan-to-scan rounds (the default iterates until converged and would catch
+	// even this jump, doc/LOAM.md "Cold start"), which prior the adapter passed decides the result.
 	const Drive d = drive();
-	const auto [none, priorNone] = run(d, std::nullopt);
+	const auto [none, priorNone] = run(d, std::nullopt, {"loam.odometry.max_rounds=2"});
 	EXPECT_EQ(priorNone, "constant_velocity");
 	EXPECT_GT(translationError(none, d.vehicle_motion), 0.05);
-	const auto [cv, priorCv] = run(d, d.vehicle_motion, {"loam.prior.source=constant_velocity"});
+	const auto [cv, priorCv] =
+		run(d, d.vehicle_motion, {"loam.prior.source=constant_velocity", "loam.odometry.max_rounds=2"});
 	EXPECT_EQ(priorCv, "constant_velocity");  // told to ignore guesses
 	EXPECT_GT(translationError(cv, d.vehicle_motion), 0.05);
 }

@@ -1,5 +1,7 @@
 #include "observation_stream.h"
 
+#include "allocation_limit.h"
+
 #include <vlo/core/error.h>
 
 #include <mrpt/obs/CActionCollection.h>
@@ -10,6 +12,12 @@
 namespace vlo
 {
 using mrpt::obs::CObservation;
+
+namespace
+{
+/// No buffer of a real rawlog comes near this (a 64-beam scan is a few MB): a larger one is a corrupt count.
+constexpr std::size_t kMaxBufferBytes = std::size_t{256} << 20;
+}  // namespace
 
 std::string mrptMessage(const std::string& what)
 {
@@ -51,6 +59,7 @@ bool ObservationStream::readObject()
 	mrpt::serialization::CSerializable::Ptr obj;
 	try
 	{
+		const ScopedAllocationLimit limit(kMaxBufferBytes);
 		obj = ar_->ReadObject();
 	}
 	catch (const mrpt::serialization::CExceptionEOF&)

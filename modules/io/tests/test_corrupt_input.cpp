@@ -8,9 +8,11 @@
 #include <vlo/io/lidar_observations.h>
 #include <vlo/io/trajectory.h>
 
+#include <mrpt/io/CMemoryStream.h>
 #include <sys/resource.h>
 
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <regex>
 
@@ -43,6 +45,16 @@ std::string rawCalibWith(const std::string& name, const std::string& pattern, co
 	const std::string changed = std::regex_replace(text, std::regex(pattern), replacement, std::regex_constants::format_first_only);
 	EXPECT_NE(changed, text) << pattern;
 	return write(dir + "/" + name, changed);
+}
+
+/// A small good rawlog: reading it links the reader, and with it the JPEG error handler.
+std::string writeFramesForLink()
+{
+	const std::string path = freshDir("_link") + "/ok.rawlog";
+	RawlogWriter w(path, false);
+	w.writeFrame(testFrame(0, 0.0));
+	w.commit();
+	return path;
 }
 
 const char* kOdometryCalib =
@@ -121,4 +133,24 @@ TEST(CorruptInput, MalformedTextIsQuotedPrintably)
 	expectInputError([&] { readTum(tum); }, {tum, "line 1: '1?' is not a number"});
 	const std::string dates = write(dir + "/timestamps.txt", "2011-09-26 13:02:25.0\x07\n");
 	expectInputError([&] { readKittiRawTimestamps(dates); }, {dates, "'2011-09-26 13:02:25.0?' is not a date"});
+}
+
+// MRPT decodes inline JPEG images (CImage::serializeFrom, a bit flipped in a rawlog) with libjpeg's
+// default error handler, which ended the process: exit 1, "Not a JPEG file: starts with 0x00 0x00".
+// The reader's catch turns the exception into its one-line "corrupt rawlog" error.
+TEST(CorruptInput, CorruptJpegDataThrowsInsteadOfEndingTheProcess)
+{
+	RawlogReader keep_linked(writeFramesForLink());
+	const std::string garbage(256, '\0');
+	mrpt::io::CMemoryStream stream(garbage.data(), garbage.size());
+	mrpt::img::CImage image;
+	try
+	{
+		image.loadFromStreamAsJPEG(stream);
+		ADD_FAILURE() << "no exception";
+	}
+	catch (const std::exception& e)  // MRPT wraps it in its own exception
+	{
+		EXPECT_NE(std::string(e.what()).find("JPEG image: Not a JPEG file"), std::string::npos) << e.what();
+	}
 }

@@ -1,10 +1,11 @@
 # The two commands of the README:
 #   make run    install deps, build, and replay the project's own sample data -> results/sample/
 #   make test   install deps, build, and run every test
+#   make test-sanitize   the unit and e2e tests built with ASan + UBSan in build-asan/ (doc/ROBUSTNESS.md)
 BUILD ?= build
 JOBS  ?= $(shell nproc)
 
-.PHONY: all deps build run test clean
+.PHONY: all deps build run test test-sanitize clean
 all: build
 
 deps:
@@ -24,5 +25,19 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --output-log ctest.log
 	@if grep -E '\*\*\*Skipped' $(BUILD)/ctest.log; then echo "make test: tests were skipped (see above)"; exit 1; fi
 
+# Its own build folder; any sanitizer report fails the test that caused it. Suppressions (with the reason
+# for each) are for reports inside MRPT, PCL or OpenCV only: tests/sanitizers/.
+SAN_BUILD ?= build-asan
+SAN_SUPP  := $(CURDIR)/tests/sanitizers
+SAN_ENV   := ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0 \
+	LSAN_OPTIONS=suppressions=$(SAN_SUPP)/lsan.supp:print_suppressions=0 \
+	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$(SAN_SUPP)/ubsan.supp \
+	VLO_FUZZ_INPUTS=500
+test-sanitize: deps
+	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVLO_SANITIZE=ON -DVLO_BUILD_BENCH=OFF
+	cmake --build $(SAN_BUILD) -j $(JOBS)
+	cd $(SAN_BUILD) && $(SAN_ENV) ctest --output-on-failure -j $(JOBS) --output-log ctest.log
+	@if grep -E '\*\*\*Skipped' $(SAN_BUILD)/ctest.log; then echo "make test-sanitize: tests were skipped (see above)"; exit 1; fi
+
 clean:
-	rm -rf $(BUILD) results
+	rm -rf $(BUILD) $(SAN_BUILD) results

@@ -103,19 +103,44 @@ Eigen::Isometry3d nominalCam0TVehicle()
 	return T;
 }
 
+namespace
+{
+/// A rectified projection as KITTI prints it, K [I | t] with last row 0 0 1 t_z and pixel-sized
+/// numbers: anything else (a singular, skewed or absurd matrix) comes from a corrupt file.
+void checkProjection(const Matrix34d& P, const std::string& path, const std::string& key)
+{
+	const bool shape = std::abs(P(1, 0)) < 1e-6 && std::abs(P(2, 0)) < 1e-6 && std::abs(P(2, 1)) < 1e-6 &&
+		std::abs(P(2, 2) - 1) < 1e-6;
+	if (!shape || P.cwiseAbs().maxCoeff() >= 1e6 || !offsetOf(P).allFinite())
+		failInput(path, key + " is not a rectified projection K [I | t] (last row 0 0 1 t_z, values below 1e6)");
+}
+
+/// [R | t] whose R is a rotation up to the printed digits; anything else comes from a corrupt file.
+Eigen::Isometry3d rigidOrFail(const Matrix34d& M, const std::string& path, const std::string& key)
+{
+	const Eigen::Matrix3d R = M.leftCols<3>();
+	if ((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-3 || R.determinant() <= 0 ||
+		M.col(3).norm() >= 1e6)
+		failInput(path, key + " is not a rigid transform [R | t] (R must be a rotation, t below 1e6)");
+	return rigidFrom34(M);
+}
+}  // namespace
+
 KittiOdometryCalib readKittiOdometryCalib(const std::string& calib_txt, int camera)
 {
 	const KittiCalibFile f(calib_txt);
 	KittiOdometryCalib c;
 	c.P0 = f.matrix34("P0");
 	if (c.P0(0, 0) <= 0 || c.P0(1, 1) <= 0) failInput(calib_txt, "P0 has a non-positive focal length");
+	checkProjection(c.P0, calib_txt, "P0");
 	if (camera < 0 || camera > 3) failInput(calib_txt, "camera " + std::to_string(camera) + " does not exist (0..3)");
 	const std::string Pc = "P" + std::to_string(camera);
 	c.camera = camera;
 	c.P = f.matrix34(Pc);
 	if (c.P(0, 0) <= 0 || c.P(1, 1) <= 0) failInput(calib_txt, Pc + " has a non-positive focal length");
+	checkProjection(c.P, calib_txt, Pc);
 	c.has_tr = f.has("Tr");
-	c.cam0_T_velo = c.has_tr ? rigidFrom34(f.matrix34("Tr")) : nominalCam0TVehicle();
+	c.cam0_T_velo = c.has_tr ? rigidOrFail(f.matrix34("Tr"), calib_txt, "Tr") : nominalCam0TVehicle();
 	return c;
 }
 
@@ -128,10 +153,18 @@ KittiRawCalib readKittiRawCalib(const std::string& cam_to_cam, const std::string
 	c.P_rect = cc.matrix34("P_rect_" + X);
 	c.R_rect_00 = cc.matrix33("R_rect_00");
 	const auto S = cc.get("S_rect_" + X, 2);
+	for (const double side : S)  // checked before the cast: a double beyond int's range has no int value
+		if (!(side >= 1 && side <= 1e5) || side != std::floor(side))
+			failInput(cam_to_cam, "S_rect_" + X + " is not an image size (two whole numbers of pixels)");
 	c.camera_intrinsics = intrinsicsOf(c.P_rect, static_cast<int>(S[0]), static_cast<int>(S[1]));
 	if (!c.camera_intrinsics.valid()) failInput(cam_to_cam, "P_rect_" + X + " or S_rect_" + X + " is not a valid camera");
+	checkProjection(c.P_rect, cam_to_cam, "P_rect_" + X);
+	Matrix34d R_rect = Matrix34d::Zero();
+	R_rect.leftCols<3>() = c.R_rect_00;
+	rigidOrFail(R_rect, cam_to_cam, "R_rect_00");
 	c.velo_to_cam.leftCols<3>() = vc.matrix33("R");
 	c.velo_to_cam.col(3) = vc.vector3("T");
+	rigidOrFail(c.velo_to_cam, velo_to_cam, "R, T");
 	// camera X <- rectified cam0 (offset t) <- unrectified cam0 (R_rect_00) <- Velodyne ([R|T]).
 	Matrix34d cam0_T_velo;
 	cam0_T_velo.leftCols<3>() = c.R_rect_00 * c.velo_to_cam.leftCols<3>();

@@ -1,5 +1,8 @@
 #include "observation_stream.h"
 
+#include "allocation_limit.h"
+#include "jpeg_errors.h"
+
 #include <vlo/core/error.h>
 
 #include <mrpt/obs/CActionCollection.h>
@@ -10,6 +13,12 @@
 namespace vlo
 {
 using mrpt::obs::CObservation;
+
+namespace
+{
+/// No buffer of a real rawlog comes near this (a 64-beam scan is a few MB): a larger one is a corrupt count.
+constexpr std::size_t kMaxBufferBytes = std::size_t{256} << 20;
+}  // namespace
 
 std::string mrptMessage(const std::string& what)
 {
@@ -31,6 +40,7 @@ std::string mrptMessage(const std::string& what)
 ObservationStream::ObservationStream(const std::string& path)
 	: path_(path), in_(path), ar_(mrpt::serialization::archiveUniquePtrFrom(in_))
 {
+	useThrowingJpegErrors();
 	if (!readObject()) failInput(path_, "empty rawlog: no observations");
 }
 
@@ -51,6 +61,7 @@ bool ObservationStream::readObject()
 	mrpt::serialization::CSerializable::Ptr obj;
 	try
 	{
+		const ScopedAllocationLimit limit(kMaxBufferBytes);
 		obj = ar_->ReadObject();
 	}
 	catch (const mrpt::serialization::CExceptionEOF&)

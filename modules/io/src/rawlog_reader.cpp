@@ -26,6 +26,17 @@ std::string secs(double t)
 	s << std::fixed << t << " s";
 	return s.str();
 }
+
+/// A sensor pose as stored, or InputError: a corrupt one (NaN, a matrix that is no rotation) would
+/// silently bend every point or pixel of the run.
+Eigen::Isometry3d sensorPose(const mrpt::poses::CPose3D& pose, const std::string& where)
+{
+	const Eigen::Isometry3d T = toIsometry(pose);
+	const Eigen::Matrix3d R = T.linear();
+	if (!T.matrix().allFinite() || (R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-6 || R.determinant() <= 0)
+		failInput(where, "sensor pose is not a rigid transform (not finite, or its rotation is not orthonormal)");
+	return T;
+}
 }  // namespace
 
 struct RawlogReader::Impl
@@ -105,7 +116,8 @@ struct RawlogReader::Impl
 		}
 		else
 			img = toGray(obs->image);
-		const PinholeCamera cam = fromTCamera(obs->cameraParams, path + ": '" + opt.camera_label + "' at t=" + secs(t));
+		const std::string where = path + ": '" + opt.camera_label + "' at t=" + secs(t);
+		const PinholeCamera cam = fromTCamera(obs->cameraParams, where);
 		const int w = static_cast<int>(img.getWidth()), h = static_cast<int>(img.getHeight());
 		const std::string size = std::to_string(w) + "x" + std::to_string(h);
 		if (w != cam.width || h != cam.height)
@@ -118,7 +130,7 @@ struct RawlogReader::Impl
 					std::to_string(first_w) + "x" + std::to_string(first_h));
 		rig.has_camera = true;
 		rig.camera = cam;
-		rig.vehicle_T_camera = toIsometry(obs->cameraPose);
+		rig.vehicle_T_camera = sensorPose(obs->cameraPose, where);
 		f.t = t;
 		f.image = img;
 		f.has_image = true;
@@ -130,7 +142,8 @@ struct RawlogReader::Impl
 		const double t = scan_t.front();
 		scans.pop_front();
 		scan_t.pop_front();
-		ScanReading scan = readScanObservation(*obs, path + ": '" + opt.lidar_label + "' at t=" + secs(t));
+		const std::string where = path + ": '" + opt.lidar_label + "' at t=" + secs(t);
+		ScanReading scan = readScanObservation(*obs, where);
 		stats.invalid_points += scan.dropped;
 		stats.default_calibrations += scan.default_calibration;
 		if (!f.has_image) f.t = t;
@@ -140,7 +153,7 @@ struct RawlogReader::Impl
 		mrpt::poses::CPose3D sensor_pose;
 		obs->getSensorPose(sensor_pose);
 		rig.has_lidar = true;
-		rig.vehicle_T_lidar = toIsometry(sensor_pose);
+		rig.vehicle_T_lidar = sensorPose(sensor_pose, where);
 		f.has_scan = true;
 	}
 

@@ -1,3 +1,5 @@
+#include "printable.h"
+
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
 #include <vlo/core/se3.h>
@@ -29,7 +31,7 @@ std::vector<double> parseNumbers(const std::string& line, size_t n, const std::s
 		char* end = nullptr;
 		const double d = std::strtod(tok.c_str(), &end);
 		if (*end != '\0')
-			failInput(path, "line " + std::to_string(lineNo) + ": '" + tok + "' is not a number");
+			failInput(path, "line " + std::to_string(lineNo) + ": '" + printable(tok) + "' is not a number");
 		if (!std::isfinite(d)) failInput(path, "line " + std::to_string(lineNo) + ": non-finite value");
 		v.push_back(d);
 	}

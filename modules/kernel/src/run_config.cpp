@@ -55,6 +55,15 @@ void checkValueType(const std::string& origin, const std::string& section, const
 }
 /// A file the user gives as an INI must look like one: text, every line a comment, a [section], a
 /// key = value inside a section, or an MRPT @directive; and at least one section.
+/// Up to 60 characters of a line for a message, unprintable ones shown as '?'.
+std::string quoted(const std::string& line)
+{
+	std::string q = line.substr(0, 60);
+	for (char& c : q)
+		if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+	return "'" + q + "'";
+}
+
 void checkIniSyntax(const std::string& text, const std::string& path)
 {
 	if (text.find('\0') != std::string::npos) failInput(path, "not an INI file (binary content)");
@@ -68,14 +77,17 @@ void checkIniSyntax(const std::string& text, const std::string& path)
 		if (t.empty() || t[0] == '#' || t[0] == ';' || t.rfind("//", 0) == 0 || t[0] == '@') continue;
 		if (t[0] == '[')
 		{
-			if (t.back() != ']' || t.size() < 3) failInput(where, "malformed section header '" + t + "'");
+			const auto close = t.find(']');
+			const std::string rest = close == std::string::npos ? "" : trim(t.substr(close + 1));
+			if (close == std::string::npos || close < 2 || !(rest.empty() || rest[0] == '#' || rest[0] == ';'))
+				failInput(where, "malformed section header " + quoted(t));
 			section = true;
 			continue;
 		}
 		const auto eq = t.find('=');
 		if (eq == std::string::npos || trim(t.substr(0, eq)).empty())
-			failInput(where, "'" + t.substr(0, 60) + "' is not 'key = value', a [section] or a comment: is this an INI file?");
-		if (!section) failInput(where, "'" + t.substr(0, 60) + "' comes before any [section]");
+			failInput(where, quoted(t) + " is not 'key = value', a [section] or a comment: is this an INI file?");
+		if (!section) failInput(where, quoted(t) + " comes before any [section]");
 	}
 	if (!section) failInput(path, "no [section] in the file: is this an INI file? (see ini/ for examples)");
 }

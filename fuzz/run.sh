@@ -15,8 +15,9 @@ all=(rawlog rawlog_velodyne kitti_calib kitti_raw_calib kitti_times kitti_raw_ti
 targets=("${@:-${all[@]}}")
 build=${VLO_FUZZ_BUILD:-build-fuzz}
 
+mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-	-DVLO_FUZZ=ON -DVLO_BUILD_TESTS=OFF -DVLO_BUILD_BENCH=OFF >"$build.cmake.log"
+	-DVLO_FUZZ=ON -DVLO_BUILD_TESTS=OFF -DVLO_BUILD_BENCH=OFF >"$build/cmake.log"
 cmake --build "$build" -j "${JOBS:-$(nproc)}" --target fuzz_seeds "${targets[@]/#/fuzz_}"
 
 found=0

@@ -33,7 +33,9 @@ for t in "${targets[@]}"; do
 		-malloc_limit_mb=1024 -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1 || status=$?
 	runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
 	n=$(find "$findings" -type f | wc -l)
-	printf '%-22s %10s %8s %s\n' "$t" "${runs:-?}" "$secs" "$n${n:+ in $findings}"
+	where=""
+	[ "$n" -ne 0 ] && where=" in $findings"
+	printf '%-22s %10s %8s %s\n' "$t" "${runs:-?}" "$secs" "$n$where"
 	if [ "$status" -ne 0 ] || [ "$n" -ne 0 ]; then
 		found=1
 		grep -m3 -E 'ERROR|SUMMARY|InputError|threw' "$log" || true

@@ -15,8 +15,9 @@ all=(rawlog rawlog_velodyne kitti_calib kitti_raw_calib kitti_times kitti_raw_ti
 targets=("${@:-${all[@]}}")
 build=${VLO_FUZZ_BUILD:-build-fuzz}
 
+mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-	-DVLO_FUZZ=ON -DVLO_BUILD_TESTS=OFF -DVLO_BUILD_BENCH=OFF >"$build.cmake.log"
+	-DVLO_FUZZ=ON -DVLO_BUILD_TESTS=OFF -DVLO_BUILD_BENCH=OFF >"$build/cmake.log"
 cmake --build "$build" -j "${JOBS:-$(nproc)}" --target fuzz_seeds "${targets[@]/#/fuzz_}"
 
 found=0
@@ -32,7 +33,9 @@ for t in "${targets[@]}"; do
 		-malloc_limit_mb=1024 -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1 || status=$?
 	runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
 	n=$(find "$findings" -type f | wc -l)
-	printf '%-22s %10s %8s %s\n' "$t" "${runs:-?}" "$secs" "$n${n:+ in $findings}"
+	where=""
+	[ "$n" -ne 0 ] && where=" in $findings"
+	printf '%-22s %10s %8s %s\n' "$t" "${runs:-?}" "$secs" "$n$where"
 	if [ "$status" -ne 0 ] || [ "$n" -ne 0 ]; then
 		found=1
 		grep -m3 -E 'ERROR|SUMMARY|InputError|threw' "$log" || true

@@ -6,6 +6,7 @@ PKGS=(build-essential cmake pkg-config xz-utils
       libmrpt-dev mrpt-apps libopencv-dev libceres-dev libpcl-dev libeigen3-dev
       libgtest-dev libbenchmark-dev libgl-dev libegl-dev parallel
       python3  # the e2e scripts read CSV with its csv module
+      libjpeg62-turbo-dev  # jpeglib.h: the rawlog reader turns libjpeg errors into exceptions
       libegl-mesa0 libgl1-mesa-dri)  # headless rendering (EGL + llvmpipe) for the simulator and snapshots
 missing=()
 for p in "${PKGS[@]}"; do

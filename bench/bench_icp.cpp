@@ -8,11 +8,9 @@
 #include <vlo/icp/icp_odometry.h>
 #include <vlo/loam/lidar_odometry.h>
 
-#include <map>
 #include <memory>
 
-#include "synthetic_world.h"
-#include "test_helpers.h"
+#include "urban_street_scans.h"
 
 using namespace vlo;
 using namespace vlo::loam::test;
@@ -21,24 +19,7 @@ namespace
 {
 constexpr int kFrames = 20;
 
-// Scans are ray cast once per sensor and shared by both methods.
-const std::vector<PointCloud>& scans(bool hdl)
-{
-	static std::map<bool, std::vector<PointCloud>> cache;
-	auto& s = cache[hdl];
-	if (s.empty())
-	{
-		Path path;
-		path.add(15, 0.0);
-		path.add(40, 1.0 / 35);
-		const World world = urbanWorld(path, 3);
-		LidarModel m = hdl ? hdl64() : vlp16();
-		m.noise_sigma = 0.01;
-		std::mt19937 rng(5);
-		for (int i = 0; i < kFrames; ++i) s.push_back(scan(world, m, lidarPoseAt(path, 1.0 * i), &rng));
-	}
-	return s;
-}
+const std::vector<PointCloud>& scans(bool hdl) { return urbanStreetScans(hdl, kFrames); }
 
 /// Runs `process(i)` on frames 0..kFrames-1 over and over, rebuilding the odometry between rounds.
 template <class Odometry, class MakeOdometry, class Process>

@@ -9,10 +9,8 @@
 #include <vlo/loam/lidar_odometry.h>
 
 #include <map>
-#include <memory>
 
-#include "synthetic_world.h"
-#include "test_helpers.h"
+#include "urban_street_scans.h"
 
 using namespace vlo;
 using namespace vlo::loam;
@@ -25,28 +23,18 @@ constexpr int kFrames = 20;
 struct Sequence
 {
 	LoamOptions opt;
-	std::vector<PointCloud> scans;
+	const std::vector<PointCloud>& scans;
 };
 
-// Scans are ray cast once per sensor and shared by every benchmark.
 const Sequence& sequence(bool hdl)
 {
-	static std::map<bool, std::unique_ptr<Sequence>> cache;
-	auto& s = cache[hdl];
-	if (!s)
+	if (hdl)
 	{
-		s = std::make_unique<Sequence>();
-		s->opt = hdl ? hdl64Options() : vlp16Options();
-		Path path;
-		path.add(15, 0.0);
-		path.add(40, 1.0 / 35);
-		const World world = urbanWorld(path, 3);
-		LidarModel m = hdl ? hdl64() : vlp16();
-		m.noise_sigma = 0.01;
-		std::mt19937 rng(5);
-		for (int i = 0; i < kFrames; ++i) s->scans.push_back(scan(world, m, lidarPoseAt(path, 1.0 * i), &rng));
+		static const Sequence s{hdl64Options(), urbanStreetScans(true, kFrames)};
+		return s;
 	}
-	return *s;
+	static const Sequence s{vlp16Options(), urbanStreetScans(false, kFrames)};
+	return s;
 }
 
 void BM_Preprocess(benchmark::State& state, bool hdl)

@@ -18,12 +18,8 @@ class IcpModule : public LidarOdometryModule
 	Eigen::Isometry3d process(
 		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
 	{
-		if (!rig_set_) vehicle_T_lidar_ = frame.rig.vehicle_T_lidar;
-		rig_set_ = true;
-		// A motion of the vehicle seen from the LiDAR: L = Tvl^-1 * V * Tvl.
-		std::optional<Eigen::Isometry3d> lidar_motion;
-		if (vehicle_motion) lidar_motion = vehicle_T_lidar_.inverse() * *vehicle_motion * vehicle_T_lidar_;
-		const auto r = odometry_->process(frame.t, frame.scan, lidar_motion);
+		mount_.observe(frame);
+		const auto r = odometry_->process(frame.t, frame.scan, mount_.lidarMotion(vehicle_motion));
 
 		table.set("lo_status", std::string(icp::toString(r.status)));
 		table.set("lo_prior", r.prediction);
@@ -39,14 +35,13 @@ class IcpModule : public LidarOdometryModule
 		table.set("ms_lo_features", r.ms_preprocess, 2);
 		table.set("ms_lo_mapping", r.ms_registration + r.ms_map_update, 2);
 		table.set("lo_reason", r.reason);
-		return vehicle_T_lidar_ * r.pose * vehicle_T_lidar_.inverse();
+		return mount_.vehiclePose(r.pose);
 	}
 
    private:
 	icp::IcpOptions opt_;
 	std::unique_ptr<icp::IcpOdometry> odometry_;
-	Eigen::Isometry3d vehicle_T_lidar_ = Eigen::Isometry3d::Identity();
-	bool rig_set_ = false;
+	LidarMount mount_;
 };
 VLO_REGISTER_MODULE(LidarOdometryModule, "icp", IcpModule);
 }  // namespace

@@ -38,6 +38,13 @@ PointCloud ringScan(std::size_t per_ring = 36)
 	return c;
 }
 
+void writeRawlog(const std::string& path, const std::vector<Frame>& frames, bool external_images)
+{
+	RawlogWriter w(path, external_images);
+	for (const auto& f : frames) w.writeFrame(f);
+	w.commit();
+}
+
 std::map<std::uint16_t, double> meanElevationPerRing(const PointCloud& c)
 {
 	std::map<std::uint16_t, std::pair<double, int>> acc;
@@ -59,12 +66,7 @@ TEST(LidarObservations, TimeAndRingSurviveARawlogWithTheScanStampedApartFromTheI
 	image.has_scan = false;
 	scan.has_image = false;
 	scan.scan = ringScan();
-	{
-		RawlogWriter w(path, false);
-		w.writeFrame(image);
-		w.writeFrame(scan);
-		w.commit();
-	}
+	writeRawlog(path, {image, scan}, false);
 	const auto frames = readFrames(path);
 	ASSERT_EQ(frames.size(), 1u);
 	const PointCloud& got = frames[0].scan;
@@ -128,12 +130,7 @@ TEST(LidarObservations, DistortionModelsSurviveARawlog)
 	a.rig.camera.dist = {-0.28, 0.07, 1e-4, -2e-4, 0.01, 0.002, -0.003, 0.0004};  // rational polynomial
 	b.rig.camera.distortion = mrpt::img::DistortionModel::kannala_brandt;
 	b.rig.camera.dist = {0.01, -0.005, 0, 0, 0.002, -0.0007, 0, 0};  // equidistant k1 k2 k3 k4
-	{
-		RawlogWriter w(path, true);
-		w.writeFrame(a);
-		w.writeFrame(b);
-		w.commit();
-	}
+	writeRawlog(path, {a, b}, true);
 	const auto frames = readFrames(path);
 	ASSERT_EQ(frames.size(), 2u);
 	for (int k = 0; k < 2; ++k)

@@ -25,15 +25,8 @@ class AloamModule : public LidarOdometryModule
 	Eigen::Isometry3d process(
 		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
 	{
-		if (!rig_set_)
-		{
-			vehicle_T_lidar_ = frame.rig.vehicle_T_lidar;
-			rig_set_ = true;
-		}
-		// A motion of the vehicle seen from the LiDAR: L = Tvl^-1 * V * Tvl.
-		std::optional<Eigen::Isometry3d> lidar_motion;
-		if (vehicle_motion) lidar_motion = vehicle_T_lidar_.inverse() * *vehicle_motion * vehicle_T_lidar_;
-		const auto r = lo_->process(frame.t, frame.scan, lidar_motion);
+		mount_.observe(frame);
+		const auto r = lo_->process(frame.t, frame.scan, mount_.lidarMotion(vehicle_motion));
 
 		table.set("lo_status", std::string(loam::toString(r.status)));
 		table.set("lo_prior", r.prior_source);
@@ -52,14 +45,13 @@ class AloamModule : public LidarOdometryModule
 		table.set("ms_lo_odometry", r.ms.deskew + r.ms.odometry, 2);
 		table.set("ms_lo_mapping", r.ms.mapping + r.ms.map_update, 2);
 		table.set("lo_reason", r.reason);
-		return vehicle_T_lidar_ * r.pose * vehicle_T_lidar_.inverse();
+		return mount_.vehiclePose(r.pose);
 	}
 
    private:
 	loam::LoamOptions opt_;
 	std::unique_ptr<loam::LidarOdometry> lo_;
-	Eigen::Isometry3d vehicle_T_lidar_ = Eigen::Isometry3d::Identity();
-	bool rig_set_ = false;
+	LidarMount mount_;
 };
 VLO_REGISTER_MODULE(LidarOdometryModule, "aloam", AloamModule);
 }  // namespace

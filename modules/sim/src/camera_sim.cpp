@@ -85,42 +85,28 @@ View CameraSim::view(const Eigen::Isometry3d& world_T_cam) const
 
 mrpt::img::CImage CameraSim::image(const RenderedView& t, double sigma, Rng& rng) const
 {
-	if (lens_) return distortedImage(t, sigma, rng);
-	mrpt::img::CImage img(K_.width, K_.height, mrpt::img::CH_GRAY);
-	for (int r = 0; r < K_.height; ++r)
+	// 2x2 means of the supersampled tile (exact in float: sums of four bytes over 4).
+	const PinholeCamera& P = pinhole();
+	cv::Mat picture(P.height, P.width, CV_32F);
+	for (int r = 0; r < P.height; ++r)
 	{
 		const uint8_t* a = &t.gray[static_cast<std::size_t>(2 * r) * t.width];
 		const uint8_t* b = a + t.width;
-		auto* out = img.ptrLine<uint8_t>(r);
-		for (int c = 0; c < K_.width; ++c)
-		{
-			const double mean = (a[2 * c] + a[2 * c + 1] + b[2 * c] + b[2 * c + 1]) / 4.0;
-			const double v = mean + (sigma > 0 ? sigma * rng.normal() : 0.0);
-			out[c] = static_cast<uint8_t>(std::clamp(std::lround(v), 0L, 255L));
-		}
+		for (int c = 0; c < P.width; ++c) picture.at<float>(r, c) = (a[2 * c] + a[2 * c + 1] + b[2 * c] + b[2 * c + 1]) / 4.0f;
 	}
-	return img;
-}
-
-mrpt::img::CImage CameraSim::distortedImage(const RenderedView& t, double sigma, Rng& rng) const
-{
-	const PinholeCamera& K = lens_->canvas;
-	cv::Mat pinhole(K.height, K.width, CV_32F);
-	for (int r = 0; r < K.height; ++r)
+	if (lens_)  // rays leaving the canvas see black, as beyond a real lens's field
 	{
-		const uint8_t* a = &t.gray[static_cast<std::size_t>(2 * r) * t.width];
-		const uint8_t* b = a + t.width;
-		for (int c = 0; c < K.width; ++c) pinhole.at<float>(r, c) = (a[2 * c] + a[2 * c + 1] + b[2 * c] + b[2 * c + 1]) / 4.0f;
+		cv::Mat warped;
+		cv::remap(picture, warped, lens_->map_x, lens_->map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+		picture = warped;
 	}
-	cv::Mat warped;  // rays leaving the pinhole picture see black, as beyond a real lens's field
-	cv::remap(pinhole, warped, lens_->map_x, lens_->map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
 	mrpt::img::CImage img(K_.width, K_.height, mrpt::img::CH_GRAY);
 	for (int r = 0; r < K_.height; ++r)
 	{
 		auto* out = img.ptrLine<uint8_t>(r);
 		for (int c = 0; c < K_.width; ++c)
 		{
-			const double v = warped.at<float>(r, c) + (sigma > 0 ? sigma * rng.normal() : 0.0);
+			const double v = picture.at<float>(r, c) + (sigma > 0 ? sigma * rng.normal() : 0.0);
 			out[c] = static_cast<uint8_t>(std::clamp(std::lround(v), 0L, 255L));
 		}
 	}

@@ -12,6 +12,35 @@
 
 namespace vlo
 {
+/// Where a LiDAR odometry that works in its sensor's frame meets the interface's vehicle frame: the
+/// LiDAR's placement, taken from the first frame, moves guesses in and poses out.
+class LidarMount
+{
+   public:
+	/// Takes the placement from the first frame it sees; later frames keep it.
+	void observe(const Frame& frame)
+	{
+		if (known_) return;
+		vehicle_T_lidar_ = frame.rig.vehicle_T_lidar;
+		known_ = true;
+	}
+	/// A motion of the vehicle seen from the LiDAR: L = Tvl^-1 * V * Tvl.
+	std::optional<Eigen::Isometry3d> lidarMotion(const std::optional<Eigen::Isometry3d>& vehicle_motion) const
+	{
+		if (!vehicle_motion) return std::nullopt;
+		return vehicle_T_lidar_.inverse() * *vehicle_motion * vehicle_T_lidar_;
+	}
+	/// The vehicle's pose relative to its first frame from the LiDAR's relative to its first frame.
+	Eigen::Isometry3d vehiclePose(const Eigen::Isometry3d& lidar_pose) const
+	{
+		return vehicle_T_lidar_ * lidar_pose * vehicle_T_lidar_.inverse();
+	}
+
+   private:
+	Eigen::Isometry3d vehicle_T_lidar_ = Eigen::Isometry3d::Identity();
+	bool known_ = false;
+};
+
 class LidarOdometryModule
 {
    public:

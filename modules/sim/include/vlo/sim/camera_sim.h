@@ -28,7 +28,6 @@ class CameraSim
 	static float depthAt(const RenderedView& tile, double u, double v);
 
    private:
-	mrpt::img::CImage distortedImage(const RenderedView& tile, double sigma, Rng& rng) const;
 	const PinholeCamera& pinhole() const;  ///< the camera rendered (K_, widened for a lens)
 
 	PinholeCamera K_;

@@ -1,51 +1,86 @@
 #include <vlo/core/cli.h>
 #include <vlo/core/error.h>
 
+#include <CLI/CLI.hpp>
+
 #include <cstdlib>
-#include <sstream>
+#include <memory>
 
 namespace vlo
 {
 namespace
 {
-const CliOption* findOption(const std::vector<CliOption>& options, const std::string& name)
+/// CLI11's help layout with the app's own synopsis in place of its generic "Usage: app [OPTIONS]".
+class SynopsisFormatter : public CLI::Formatter
 {
+   public:
+	explicit SynopsisFormatter(std::string synopsis) : synopsis_(std::move(synopsis)) { column_width(30); }
+	std::string make_usage(const CLI::App*, std::string) const override { return synopsis_ + "\n"; }
+
+   private:
+	std::string synopsis_;
+};
+
+/// Required and repeated options are checked by CommandLine (one-line errors naming the option), so CLI11 only
+/// collects every value; the help text says which options are required or repeatable.
+std::unique_ptr<CLI::App> makeApp(const std::vector<CliOption>& options)
+{
+	auto app = std::make_unique<CLI::App>();
+	app->allow_extras();
 	for (const auto& o : options)
-		if (o.name == name) return &o;
-	return nullptr;
+	{
+		const std::string help = o.help + (o.required ? " (required)" : "") + (o.repeatable ? " (repeatable)" : "");
+		CLI::Option* opt = o.value_name.empty() ? app->add_flag("--" + o.name, help)
+												: app->add_option("--" + o.name, help)->type_name(o.value_name);
+		opt->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+	}
+	return app;
+}
+
+/// The option named in CLI11's "Expected exactly 1 arguments to --name, got 0".
+std::string optionIn(const std::string& message)
+{
+	const auto at = message.find("--");
+	if (at == std::string::npos) return message;
+	const auto end = message.find_first_of(",: ", at);
+	return message.substr(at, end == std::string::npos ? std::string::npos : end - at);
 }
 }  // namespace
 
 CommandLine::CommandLine(int argc, char** argv, int first, std::vector<CliOption> options)
 	: options_(std::move(options))
 {
-	for (int i = first; i < argc; ++i)
+	auto app = makeApp(options_);
+	std::vector<std::string> args(argv + std::min(first, argc), argv + argc);
+	std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+	try
 	{
-		const std::string arg = argv[i];
-		if (arg == "--help" || arg == "-h")
-		{
-			help_ = true;
-			return;
-		}
-		if (arg.rfind("--", 0) != 0) failInput("command line", "unexpected argument '" + arg + "'");
-		std::string name = arg.substr(2), value;
-		const auto eq = name.find('=');
-		const bool inlineValue = eq != std::string::npos;
-		if (inlineValue)
-		{
-			value = name.substr(eq + 1);
-			name = name.substr(0, eq);
-		}
-		const CliOption* opt = findOption(options_, name);
-		if (!opt) failInput("command line", "unknown option '--" + name + "' (see --help)");
-		if (!opt->value_name.empty() && !inlineValue)
-		{
-			if (i + 1 >= argc) failInput("command line", "option '--" + name + "' needs a value");
-			value = argv[++i];
-		}
-		if (values_.count(name) && !opt->repeatable)
-			failInput("command line", "option '--" + name + "' given twice");
-		values_[name].push_back(value);
+		app->parse(args);
+	}
+	catch (const CLI::CallForHelp&)
+	{
+		help_ = true;
+		return;
+	}
+	catch (const CLI::ArgumentMismatch& e)
+	{
+		failInput("command line", "option '" + optionIn(e.what()) + "' needs a value");
+	}
+	catch (const CLI::ParseError& e)
+	{
+		failInput("command line", e.what());
+	}
+	for (const std::string& extra : app->remaining())
+	{
+		if (extra.rfind("--", 0) != 0) failInput("command line", "unexpected argument '" + extra + "'");
+		failInput("command line", "unknown option '" + extra.substr(0, extra.find('=')) + "' (see --help)");
+	}
+	for (const auto& o : options_)
+	{
+		const CLI::Option* opt = app->get_option("--" + o.name);
+		if (opt->count() == 0) continue;
+		if (opt->count() > 1 && !o.repeatable) failInput("command line", "option '--" + o.name + "' given twice");
+		values_[o.name] = o.value_name.empty() ? std::vector<std::string>(opt->count()) : opt->results();
 	}
 	for (const auto& o : options_)
 		if (o.required && !has(o.name)) failInput("command line", "missing required option '--" + o.name + "'");
@@ -53,17 +88,9 @@ CommandLine::CommandLine(int argc, char** argv, int first, std::vector<CliOption
 
 std::string CommandLine::usage(const std::string& synopsis) const
 {
-	std::ostringstream s;
-	s << synopsis << "\n\nOptions:\n";
-	for (const auto& o : options_)
-	{
-		std::string left = "  --" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
-		if (left.size() < 28) left.resize(28, ' ');
-		s << left << " " << o.help << (o.required ? " (required)" : "") << (o.repeatable ? " (repeatable)" : "")
-		  << "\n";
-	}
-	s << "  --help                       this text\n";
-	return s.str();
+	auto app = makeApp(options_);
+	app->formatter(std::make_shared<SynopsisFormatter>(synopsis));
+	return app->help();
 }
 
 std::string CommandLine::get(const std::string& name, const std::string& fallback) const

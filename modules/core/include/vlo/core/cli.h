@@ -1,5 +1,5 @@
 #pragma once
-// A small command-line parser shared by every app: "--name value" options, "--flag" switches,
+// The command line of every app (CLI11 underneath): "--name value" options, "--flag" switches,
 // repeatable options, --help, and a clear error for anything unknown or missing.
 #include <map>
 #include <string>

@@ -9,6 +9,7 @@
 #include <vlo/core/error.h>
 
 #include <cmath>
+#include <fstream>
 
 using namespace vlo;
 using namespace vlo::batch;
@@ -163,4 +164,21 @@ TEST(BatchJson, ScalarsStringsAndNulls)
 	EXPECT_THROW(JsonFields::parse("[1]", "j"), InputError);
 	EXPECT_THROW(JsonFields::parse("{\"a\": 1", "j"), InputError);
 	EXPECT_THROW(JsonFields::read("/no/such.json"), InputError);
+}
+
+TEST(BatchJson, CorruptFileIsOneLineNamingIt)
+{
+	const std::string path = "corrupt_summary.json";
+	std::ofstream(path) << "{\"frames\": 12,\n\"ms_per_frame\": 3.\n";
+	try
+	{
+		JsonFields::read(path);
+		FAIL() << "no error";
+	}
+	catch (const InputError& e)
+	{
+		const std::string m = e.what();
+		EXPECT_EQ(m.rfind(path + ": not valid JSON (", 0), 0u) << m;
+		EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+	}
 }

@@ -1,6 +1,8 @@
 #include <vlo/core/atomic_file.h>
 #include <vlo/eval/report.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,34 +15,14 @@ namespace
 {
 constexpr double kDeg = 180.0 / M_PI;
 
-std::string num(std::optional<double> v)
+/// Absent or not finite: null.
+nlohmann::ordered_json num(std::optional<double> v)
 {
-	if (!v || !std::isfinite(*v)) return "null";
-	char buf[32];
-	std::snprintf(buf, sizeof buf, "%.10g", *v);
-	return buf;
+	if (!v || !std::isfinite(*v)) return nullptr;
+	return *v;
 }
 
-std::string str(const std::string& s)
-{
-	std::string o = "\"";
-	for (const char c : s)
-	{
-		if (c == '"' || c == '\\')
-			o += std::string("\\") + c;
-		else if (static_cast<unsigned char>(c) < 0x20)
-		{
-			char buf[8];
-			std::snprintf(buf, sizeof buf, "\\u%04x", c);
-			o += buf;
-		}
-		else
-			o += c;
-	}
-	return o + "\"";
-}
-
-std::string noteOrNull(const std::string& s) { return s.empty() ? "null" : str(s); }
+nlohmann::ordered_json noteOrNull(const std::string& s) { return s.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(s); }
 
 std::string metricName(const EvalOptions& o)
 {
@@ -77,45 +59,33 @@ std::string toJson(const EvalReport& r)
 		are = r.ate->are_rmse_deg, scale = r.ate->sim3_scale;
 		if (r.gt_length_m > 0) ate_pct = 100 * r.ate->ate_rmse_m / r.gt_length_m;
 	}
-	std::ostringstream o;
-	o << "{\n";
-	o << "  \"gt\": " << str(r.options.gt_name) << ",\n  \"est\": " << str(r.options.est_name) << ",\n";
-	o << "  \"metric\": " << str(metricName(r.options)) << ",\n  \"align\": " << str(toString(r.options.align)) << ",\n";
-	o << "  \"n_matched\": " << a.matched() << ",\n  \"n_est\": " << a.n_est << ",\n  \"n_gt\": " << a.n_gt << ",\n";
-	o << "  \"n_dropped_outside_gt\": " << a.n_outside_span << ",\n  \"n_dropped_gt_gap\": " << a.n_in_gap << ",\n";
-	o << "  \"max_dt_s\": " << num(a.max_gap_used_s) << ",\n";
-	o << "  \"gt_translation_only\": " << (r.options.gt_translation_only ? "true" : "false") << ",\n";
-	o << "  \"gt_length_m\": " << num(r.gt_length_m) << ",\n  \"est_length_m\": " << num(r.est_length_m) << ",\n";
-	o << "  \"ate_rmse_m\": " << num(ate) << ",\n  \"ate_mean_m\": " << num(ate_mean) << ",\n";
-	o << "  \"ate_max_m\": " << num(ate_max) << ",\n  \"ate_pct_of_length\": " << num(ate_pct) << ",\n";
-	o << "  \"are_rmse_deg\": " << num(are) << ",\n  \"sim3_scale\": " << num(scale) << ",\n";
-	o << "  \"ate_note\": " << noteOrNull(r.ate_note) << ",\n  \"are_note\": " << noteOrNull(r.are_note) << ",\n";
-	o << "  \"kitti_frame\": " << str(r.kitti_frame) << ",\n";
-	o << "  \"kitti_t_err_pct\": " << num(k.t_pct) << ",\n  \"kitti_r_err_deg_per_m\": " << num(k.r_deg_m) << ",\n";
-	o << "  \"kitti_r_err_deg_per_100m\": " << num(k.r_deg_100m) << ",\n";
-	o << "  \"kitti_segments\": " << (r.kitti ? std::to_string(r.kitti->segments.size()) : "null") << ",\n";
-	o << "  \"kitti_per_length\": [";
+	nlohmann::ordered_json perLength = nlohmann::ordered_json::array();
 	if (r.kitti)
-		for (std::size_t i = 0; i < r.kitti->per_length.size(); ++i)
-		{
-			const auto& s = r.kitti->per_length[i];
-			o << (i ? ",\n" : "\n") << "    {\"length_m\": " << num(s.length) << ", \"segments\": " << s.n
-			  << ", \"t_err_pct\": " << num(100 * s.t_err) << ", \"r_err_deg_per_m\": " << num(kDeg * s.r_err)
-			  << ", \"r_err_deg_per_100m\": " << num(100 * kDeg * s.r_err) << "}";
-		}
-	o << (r.kitti && !r.kitti->per_length.empty() ? "\n  ],\n" : "],\n");
-	o << "  \"kitti_note\": " << noteOrNull(r.kitti_note) << ",\n";
+		for (const auto& s : r.kitti->per_length)
+			perLength.push_back({{"length_m", num(s.length)}, {"segments", s.n}, {"t_err_pct", num(100 * s.t_err)},
+				{"r_err_deg_per_m", num(kDeg * s.r_err)}, {"r_err_deg_per_100m", num(100 * kDeg * s.r_err)}});
 	std::optional<double> rt, rr, rx, ry, rz, cvt, cvr;
 	if (r.rpe)
 	{
 		rt = r.rpe->t_rmse_m, rr = r.rpe->r_rmse_deg, cvt = r.rpe->cv_t_rmse_m, cvr = r.rpe->cv_r_rmse_deg;
 		rx = r.rpe->t_rmse_axes_m.x(), ry = r.rpe->t_rmse_axes_m.y(), rz = r.rpe->t_rmse_axes_m.z();
 	}
-	o << "  \"rpe_t_rmse_m\": " << num(rt) << ",\n  \"rpe_r_rmse_deg\": " << num(rr) << ",\n";
-	o << "  \"rpe_t_rmse_axes_m\": [" << num(rx) << ", " << num(ry) << ", " << num(rz) << "],\n";
-	o << "  \"gt_constant_velocity_t_rmse_m\": " << num(cvt) << ",\n  \"gt_constant_velocity_r_rmse_deg\": " << num(cvr) << ",\n";
-	o << "  \"rpe_note\": " << noteOrNull(r.rpe_note) << "\n}\n";
-	return o.str();
+	const nlohmann::ordered_json j = {{"gt", r.options.gt_name}, {"est", r.options.est_name},
+		{"metric", metricName(r.options)}, {"align", toString(r.options.align)}, {"n_matched", a.matched()},
+		{"n_est", a.n_est}, {"n_gt", a.n_gt}, {"n_dropped_outside_gt", a.n_outside_span},
+		{"n_dropped_gt_gap", a.n_in_gap}, {"max_dt_s", num(a.max_gap_used_s)},
+		{"gt_translation_only", r.options.gt_translation_only}, {"gt_length_m", num(r.gt_length_m)},
+		{"est_length_m", num(r.est_length_m)}, {"ate_rmse_m", num(ate)}, {"ate_mean_m", num(ate_mean)},
+		{"ate_max_m", num(ate_max)}, {"ate_pct_of_length", num(ate_pct)}, {"are_rmse_deg", num(are)},
+		{"sim3_scale", num(scale)}, {"ate_note", noteOrNull(r.ate_note)}, {"are_note", noteOrNull(r.are_note)},
+		{"kitti_frame", r.kitti_frame}, {"kitti_t_err_pct", num(k.t_pct)}, {"kitti_r_err_deg_per_m", num(k.r_deg_m)},
+		{"kitti_r_err_deg_per_100m", num(k.r_deg_100m)},
+		{"kitti_segments", r.kitti ? nlohmann::ordered_json(r.kitti->segments.size()) : nlohmann::ordered_json()},
+		{"kitti_per_length", perLength}, {"kitti_note", noteOrNull(r.kitti_note)}, {"rpe_t_rmse_m", num(rt)},
+		{"rpe_r_rmse_deg", num(rr)}, {"rpe_t_rmse_axes_m", {num(rx), num(ry), num(rz)}},
+		{"gt_constant_velocity_t_rmse_m", num(cvt)}, {"gt_constant_velocity_r_rmse_deg", num(cvr)},
+		{"rpe_note", noteOrNull(r.rpe_note)}};
+	return j.dump(2) + "\n";
 }
 
 void writeJson(const std::string& path, const EvalReport& r)

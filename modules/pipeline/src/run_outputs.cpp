@@ -7,6 +7,7 @@
 #include <vlo/viz/topdown.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -16,18 +17,6 @@ namespace vlo
 {
 namespace
 {
-std::string jsonString(const std::string& s)
-{
-	std::string o = "\"";
-	for (char c : s)
-	{
-		if (c == '"' || c == '\\') o += '\\';
-		if (c == '\n') o += "\\n";
-		else o += c;
-	}
-	return o + "\"";
-}
-
 double maxStep(const Trajectory& t)
 {
 	double m = 0;
@@ -123,15 +112,13 @@ RunSummary RunOutputs::write(
 
 void writeSummaryJson(const std::string& path, const RunSummary& s, const RunRequest& req)
 {
+	// Keys in this order; a NaN or infinite figure is written as null (doc/FORMATS.md).
+	nlohmann::ordered_json j = {{"mode", s.mode}, {"rawlog", req.rawlog}, {"ini", req.ini}, {"frames", s.frames},
+		{"seconds", s.seconds}, {"ms_per_frame", s.ms_per_frame}, {"path_length_m", s.path_length_m},
+		{"max_step_m", s.max_step_m}, {"trajectory", s.final_trajectory}, {"reader", s.reader_stats}};
+	for (const auto& [key, value] : s.figures) j[key] = value;
 	AtomicOutputFile f(path);
-	auto& o = f.stream();
-	o << "{\n  \"mode\": " << jsonString(s.mode) << ",\n  \"rawlog\": " << jsonString(req.rawlog)
-	  << ",\n  \"ini\": " << jsonString(req.ini) << ",\n  \"frames\": " << s.frames
-	  << ",\n  \"seconds\": " << s.seconds << ",\n  \"ms_per_frame\": " << s.ms_per_frame
-	  << ",\n  \"path_length_m\": " << s.path_length_m << ",\n  \"max_step_m\": " << s.max_step_m
-	  << ",\n  \"trajectory\": " << jsonString(s.final_trajectory) << ",\n  \"reader\": " << jsonString(s.reader_stats);
-	for (const auto& [key, value] : s.figures) o << ",\n  " << jsonString(key) << ": " << value;
-	o << "\n}\n";
+	f.stream() << j.dump(2) << "\n";
 	f.commit();
 }
 }  // namespace vlo

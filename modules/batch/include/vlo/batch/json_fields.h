@@ -1,6 +1,6 @@
 #pragma once
 // The top-level scalar fields of a JSON object, as written by vlo-eval --json and vlo-run's
-// summary.json: enough to read them back without a JSON library. Nested arrays and objects are skipped.
+// summary.json (parsed with nlohmann-json). Nested arrays and objects are skipped.
 #include <map>
 #include <string>
 

@@ -4,112 +4,135 @@
 
 #include "pcd_header.h"
 
+#include <pcl/console/print.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace vlo
 {
 namespace
 {
-static_assert(sizeof(float) == 4, "PCD F4 fields are IEEE float32");
+/// PCL reports problems on stderr as well as in its return codes; vlo reports them once, as InputError.
+void quietPcl() { pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS); }
 
-bool littleEndianHost()
+/// The first element of `f` in the point at `p`, whatever its PCL type.
+double readField(const std::uint8_t* p, const pcl::PCLPointField& f)
 {
-	const std::uint16_t one = 1;
-	unsigned char b;
-	std::memcpy(&b, &one, 1);
-	return b == 1;
-}
-
-void keep(PointCloud& out, double x, double y, double z, double i)
-{
-	if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return;
-	out.push_back({float(x), float(y), float(z), std::isfinite(i) ? float(i) : 0.f});
-}
-
-PointCloud readAscii(std::istream& in, const PcdHeader& h, const std::string& path, size_t lineNo)
-{
-	PointCloud out;
-	out.reserve(h.points);
-	std::string line;
-	size_t n = 0;
-	while (n < h.points && std::getline(in, line))
+	auto as = [&](auto v) {
+		std::memcpy(&v, p + f.offset, sizeof v);
+		return double(v);
+	};
+	switch (f.datatype)
 	{
-		++lineNo;
-		if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-		std::istringstream ss(line);
-		std::vector<double> v;
-		std::string tok;
-		while (ss >> tok)
-		{
-			char* end = nullptr;
-			const double d = std::strtod(tok.c_str(), &end);  // also accepts "nan"
-			if (*end != '\0') failInput(path, "line " + std::to_string(lineNo) + ": '" + tok + "' is not a number");
-			v.push_back(d);
-		}
-		if (v.size() != h.valuesPerPoint())
-			failInput(path, "line " + std::to_string(lineNo) + ": expected " + std::to_string(h.valuesPerPoint()) +
-					" values, found " + std::to_string(v.size()));
-		keep(out, v[h.value(h.x)], v[h.value(h.y)], v[h.value(h.z)], h.i < 0 ? 0.0 : v[h.value(h.i)]);
-		++n;
+		case pcl::PCLPointField::INT8: return as(std::int8_t());
+		case pcl::PCLPointField::UINT8: return as(std::uint8_t());
+		case pcl::PCLPointField::INT16: return as(std::int16_t());
+		case pcl::PCLPointField::UINT16: return as(std::uint16_t());
+		case pcl::PCLPointField::INT32: return as(std::int32_t());
+		case pcl::PCLPointField::UINT32: return as(std::uint32_t());
+		case pcl::PCLPointField::FLOAT32: return as(float());
+		case pcl::PCLPointField::FLOAT64: return as(double());
+		default: return NAN;
 	}
-	if (n < h.points)
-		failInput(path, "truncated: header says " + std::to_string(h.points) + " points, found " + std::to_string(n));
-	return out;
 }
 
-PointCloud readBinary(std::istream& in, const PcdHeader& h, const std::string& path)
+const pcl::PCLPointField* findField(const pcl::PCLPointCloud2& c, const std::string& name)
 {
-	if (!littleEndianHost()) failInput(path, "binary PCD needs a little-endian host");
-	const size_t step = h.bytesPerPoint();
-	std::vector<char> buf(step * h.points);
-	in.read(buf.data(), std::streamsize(buf.size()));
-	if (size_t(in.gcount()) != buf.size())
-		failInput(path, "truncated: header says " + std::to_string(h.points) + " points (" +
-				std::to_string(buf.size()) + " bytes) but only " + std::to_string(in.gcount()) + " bytes follow");
-	PointCloud out;
-	out.reserve(h.points);
-	for (size_t k = 0; k < h.points; ++k)
-	{
-		const char* p = buf.data() + k * step;
-		keep(out, h.read(p, h.x), h.read(p, h.y), h.read(p, h.z), h.i < 0 ? 0.0 : h.read(p, h.i));
-	}
-	return out;
+	for (const auto& f : c.fields)
+		if (f.name == name) return &f;
+	return nullptr;
+}
+
+/// Checks the header strictly, and that a binary file holds all its points: PCL's reader trusts both.
+void checkBeforePcl(const std::string& path)
+{
+	std::ifstream in(path, std::ios::binary);
+	if (!in) failInput(path, "cannot open file");
+	std::size_t lineNo = 0;
+	const PcdHeader h = readPcdHeader(in, path, lineNo);
+	if (!h.binary) return;
+	const std::uint64_t bytes = h.bytesPerPoint() * std::uint64_t(h.points);
+	const std::uint64_t follow = std::filesystem::file_size(path) - std::uint64_t(in.tellg());
+	if (follow < bytes)
+		failInput(path, "truncated: header says " + std::to_string(h.points) + " points (" + std::to_string(bytes) +
+				" bytes) but only " + std::to_string(follow) + " bytes follow");
 }
 }  // namespace
 
 void writePcd(const std::string& path, const PointCloud& cloud, PcdFormat format)
 {
+	quietPcl();
+	pcl::PointCloud<pcl::PointXYZI> pc;
+	pc.reserve(cloud.size());
+	for (const auto& p : cloud)
+	{
+		pcl::PointXYZI q;
+		q.x = p.x, q.y = p.y, q.z = p.z, q.intensity = p.intensity;
+		pc.push_back(q);
+	}
 	const bool binary = format == PcdFormat::Binary;
-	if (binary && !littleEndianHost()) failInput(path, "binary PCD needs a little-endian host");
 	AtomicOutputFile f(path, true);
-	auto& out = f.stream();
-	out << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z intensity\nSIZE 4 4 4 4\n"
-		<< "TYPE F F F F\nCOUNT 1 1 1 1\nWIDTH " << cloud.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS "
-		<< cloud.size() << "\nDATA " << (binary ? "binary" : "ascii") << "\n";
-	if (binary)
+	pcl::PCDWriter writer;
+	if (pc.empty())
 	{
-		std::vector<float> packed;
-		packed.reserve(4 * cloud.size());
-		for (const auto& p : cloud) packed.insert(packed.end(), {p.x, p.y, p.z, p.intensity});
-		out.write(reinterpret_cast<const char*>(packed.data()), std::streamsize(packed.size() * sizeof(float)));
+		// PCL writes no data section for an empty cloud: the header alone is a valid PCD.
+		f.stream() << writer.generateHeader(pc) << "DATA " << (binary ? "binary" : "ascii") << "\n";
+		f.commit();
+		return;
 	}
-	else
+	f.stream().close();
+	int rc = -1;
+	try
 	{
-		out.precision(9);  // float32 round-trips exactly with 9 significant digits
-		for (const auto& p : cloud) out << p.x << ' ' << p.y << ' ' << p.z << ' ' << p.intensity << '\n';
+		rc = binary ? writer.writeBinary(f.partialPath(), pc) : writer.writeASCII(f.partialPath(), pc, 9);
 	}
-	f.commit();
+	catch (const pcl::PCLException& e)
+	{
+		failInput(path, std::string("cannot write: ") + e.detailedMessage());
+	}
+	if (rc != 0) failInput(path, "cannot write");
+	commitFile(f.partialPath(), path);
 }
 
 PointCloud readPcd(const std::string& path)
 {
-	std::ifstream in(path, std::ios::binary);
-	if (!in) failInput(path, "cannot open file");
-	size_t lineNo = 0;
-	const PcdHeader h = readPcdHeader(in, path, lineNo);
-	return h.binary ? readBinary(in, h, path) : readAscii(in, h, path, lineNo);
+	quietPcl();
+	checkBeforePcl(path);
+	pcl::PCDReader reader;
+	pcl::PCLPointCloud2 c;
+	Eigen::Vector4f origin;
+	Eigen::Quaternionf orientation;
+	int version = 0;
+	try
+	{
+		if (reader.read(path, c, origin, orientation, version) != 0)
+			failInput(path, "malformed or truncated PCD data");
+	}
+	catch (const pcl::PCLException& e)
+	{
+		failInput(path, e.detailedMessage());
+	}
+	const auto *x = findField(c, "x"), *y = findField(c, "y"), *z = findField(c, "z"), *i = findField(c, "intensity") ? findField(c, "intensity") : findField(c, "i");
+	if (!x || !y || !z) failInput(path, "FIELDS lacks x, y or z");
+	const std::size_t n = std::size_t(c.width) * c.height;
+	if (c.data.size() < n * c.point_step) failInput(path, "truncated: fewer bytes than the header's points");
+	PointCloud out;
+	out.reserve(n);
+	for (std::size_t k = 0; k < n; ++k)
+	{
+		const std::uint8_t* p = c.data.data() + k * c.point_step;
+		const double px = readField(p, *x), py = readField(p, *y), pz = readField(p, *z);
+		const double pi = i ? readField(p, *i) : 0.0;
+		// PCL's organised clouds hold NaN for no return.
+		if (!std::isfinite(px) || !std::isfinite(py) || !std::isfinite(pz)) continue;
+		out.push_back({float(px), float(py), float(pz), std::isfinite(pi) ? float(pi) : 0.f});
+	}
+	return out;
 }
 }  // namespace vlo

@@ -3,8 +3,6 @@
 #include "pcd_header.h"
 
 #include <algorithm>
-#include <cstdint>
-#include <cstring>
 #include <map>
 #include <sstream>
 
@@ -12,14 +10,6 @@ namespace vlo
 {
 namespace
 {
-template <typename T>
-double as(const char* p)
-{
-	T v;
-	std::memcpy(&v, p, sizeof v);
-	return double(v);
-}
-
 std::size_t parseCount(const std::string& tok, const std::string& where)
 {
 	char* end = nullptr;
@@ -34,33 +24,6 @@ std::size_t PcdHeader::bytesPerPoint() const
 	std::size_t n = 0;
 	for (const auto& f : fields) n += std::size_t(f.size) * f.count;
 	return n;
-}
-
-std::size_t PcdHeader::valuesPerPoint() const
-{
-	std::size_t n = 0;
-	for (const auto& f : fields) n += f.count;
-	return n;
-}
-
-double PcdHeader::read(const char* p, int field) const
-{
-	const PcdField& f = fields[field];
-	p += f.offset;
-	switch (f.type)
-	{
-		case 'F': return f.size == 4 ? as<float>(p) : as<double>(p);
-		case 'I':
-			return f.size == 1 ? as<std::int8_t>(p)
-				: f.size == 2  ? as<std::int16_t>(p)
-				: f.size == 4  ? as<std::int32_t>(p)
-							   : as<std::int64_t>(p);
-		default:
-			return f.size == 1 ? as<std::uint8_t>(p)
-				: f.size == 2  ? as<std::uint16_t>(p)
-				: f.size == 4  ? as<std::uint32_t>(p)
-							   : as<std::uint64_t>(p);
-	}
 }
 
 PcdHeader readPcdHeader(std::istream& in, const std::string& path, std::size_t& lineNo)
@@ -89,13 +52,12 @@ PcdHeader readPcdHeader(std::istream& in, const std::string& path, std::size_t& 
 	const std::string where = path + ": PCD header";
 	for (const char* k : {"FIELDS", "SIZE", "TYPE", "WIDTH", "HEIGHT"})
 		if (!kv.count(k)) failInput(where, std::string("missing ") + k);
-	if (data == "binary_compressed")
-		failInput(path, "DATA binary_compressed is not supported; convert it with "
-			"'pcl_convert_pcd_ascii_binary IN OUT 1' (binary)");
-	if (data != "ascii" && data != "binary") failInput(where, "DATA '" + data + "' is neither ascii nor binary");
+	if (data != "ascii" && data != "binary" && data != "binary_compressed")
+		failInput(where, "DATA '" + data + "' is neither ascii, binary nor binary_compressed");
 
 	PcdHeader h;
 	h.binary = data == "binary";
+	h.compressed = data == "binary_compressed";
 	const auto& names = kv["FIELDS"];
 	const std::size_t n = names.size();
 	std::vector<std::string> counts = kv.count("COUNT") ? kv["COUNT"] : std::vector<std::string>(n, "1");

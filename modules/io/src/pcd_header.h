@@ -1,5 +1,6 @@
 #pragma once
-// Internal: the header of a PCD v0.7 file and how to read one field of a packed binary point.
+// Internal: the header of a PCD v0.7 file, checked strictly before PCL reads the file (PCL's reader trusts
+// its header: a corrupt one can make it read out of bounds).
 #include <cstddef>
 #include <istream>
 #include <string>
@@ -22,13 +23,10 @@ struct PcdHeader
 	std::vector<PcdField> fields;
 	std::size_t points = 0;
 	bool binary = false;
+	bool compressed = false;  ///< binary_compressed (LZF)
 	int x = -1, y = -1, z = -1, i = -1;  ///< field indices; i = -1 when there is no intensity
 
 	std::size_t bytesPerPoint() const;
-	std::size_t valuesPerPoint() const;
-	std::size_t value(int field) const { return fields[field].value; }
-	/// First element of `field` in the packed binary point at `p` (little-endian).
-	double read(const char* p, int field) const;
 };
 
 /// Reads up to and including the DATA line; counts lines in lineNo. Throws InputError naming `path`.

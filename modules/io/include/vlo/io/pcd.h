@@ -1,7 +1,7 @@
 #pragma once
-// Point Cloud Data files (PCL's PCD v0.7) without PCL's io library (which drags in VTK).
-// Writes x y z intensity as float32, binary or ascii. Reads ascii and binary files with any
-// fields (x, y, z required; intensity optional, else 0; others skipped); not binary_compressed.
+// Point Cloud Data files (PCD v0.7) through PCL's io library.
+// Writes x y z intensity as float32, binary or ascii. Reads ascii, binary and binary_compressed files with any
+// fields (x, y, z required; intensity optional, else 0; others skipped).
 #include <vlo/core/frame.h>
 
 #include <string>

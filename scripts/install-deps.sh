@@ -4,7 +4,7 @@ set -euo pipefail
 PKGS=(build-essential cmake pkg-config xz-utils
       librosbag-storage-dev pluginlib-dev libsensor-msgs-dev libgeometry-msgs-dev libnav-msgs-dev libtf2-msgs-dev  # ROS 1 bags (vlo-import rosbag)
       libmrpt-dev mrpt-apps libopencv-dev libceres-dev libpcl-dev libeigen3-dev
-      nlohmann-json3-dev libcli11-dev  # JSON files, command lines
+      nlohmann-json3-dev libcli11-dev libnanoflann-dev  # JSON files, command lines, kd-tree (LOAM)
       libgtest-dev libbenchmark-dev libgl-dev libegl-dev parallel
       python3  # the e2e scripts read CSV with its csv module
       libjpeg62-turbo-dev  # jpeglib.h: the rawlog reader turns libjpeg errors into exceptions

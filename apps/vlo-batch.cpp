@@ -3,6 +3,7 @@
 #include <vlo/core/app_main.h>
 #include <vlo/core/cli.h>
 #include <vlo/core/error.h>
+#include <vlo/core/log.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -20,7 +21,8 @@ int main(int argc, char** argv)
 				{"emit-jobs", "FILE", "write one shell line per run to FILE instead of running"},
 				{"emit-data", "FILE", "write one shell line per sequence to generate to FILE"},
 				{"collect", "DIR", "only build results.md/results.csv/snapshots from DIR's finished runs"},
-				{"bin", "DIR", "where vlo-sim, vlo-run and vlo-eval are (default: beside vlo-batch)"}});
+				{"bin", "DIR", "where vlo-sim, vlo-run and vlo-eval are (default: beside vlo-batch)"},
+				{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
 		if (cl.helpRequested())
 		{
 			std::cout << cl.usage(
@@ -32,6 +34,7 @@ int main(int argc, char** argv)
 				"tabulates the results in DIR/results.md and DIR/results.csv. See doc/BATCH.md.");
 			return 0;
 		}
+		vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
 		if (cl.has("collect"))
 		{
 			for (const char* o : {"plan", "out", "data", "jobs", "emit-jobs", "emit-data", "bin"})

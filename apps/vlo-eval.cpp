@@ -2,6 +2,7 @@
 #include <vlo/core/app_main.h>
 #include <vlo/core/cli.h>
 #include <vlo/core/error.h>
+#include <vlo/core/log.h>
 #include <vlo/eval/camera_frame.h>
 #include <vlo/eval/evaluate.h>
 #include <vlo/eval/report.h>
@@ -43,7 +44,8 @@ int run(int argc, char** argv)
 			{"kitti-calib", "calib.txt", "rig from the Tr line of a KITTI calib.txt: KITTI metric in camera 0"},
 			{"kitti-lengths", "L1,L2,..", "KITTI segment lengths, m (default 100,200,...,800)"},
 			{"kitti-step", "N", "KITTI first frames every N matched frames (default 10)"},
-			{"write-aligned", "OUT.tum", "write the aligned, matched estimate (TUM)"}});
+			{"write-aligned", "OUT.tum", "write the aligned, matched estimate (TUM)"},
+			{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
 	if (cl.helpRequested())
 	{
 		std::cout << cl.usage("vlo-eval --gt GT.tum --est EST.tum [options]\n\n"
@@ -52,6 +54,7 @@ int run(int argc, char** argv)
 								"doc/EVALUATION.md.");
 		return 0;
 	}
+	vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
 	EvalOptions opts;
 	opts.gt_name = cl.get("gt");
 	opts.est_name = cl.get("est");
@@ -72,7 +75,7 @@ int run(int argc, char** argv)
 	const Trajectory gt = readTum(opts.gt_name);
 	const Trajectory est = readTum(opts.est_name);
 	const EvalReport report = evaluate(gt, est, opts);
-	for (const auto& w : report.warnings) std::cerr << "vlo-eval: warning: " << w << "\n";
+	for (const auto& w : report.warnings) logger().logStr(mrpt::system::LVL_WARN, w);
 	std::cout << formatTable(report);
 	if (cl.has("json")) writeJson(cl.get("json"), report);
 	if (cl.has("write-aligned"))

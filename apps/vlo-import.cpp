@@ -2,6 +2,7 @@
 #include <vlo/core/app_main.h>
 #include <vlo/core/cli.h>
 #include <vlo/core/error.h>
+#include <vlo/core/log.h>
 #include <vlo/io/kitti_import.h>
 #include <vlo/rosbag/rosbag_import.h>
 
@@ -24,7 +25,7 @@ const char* kTopUsage =
 
 void report(const vlo::ImportSummary& s)
 {
-	for (const auto& w : s.warnings) std::cerr << kApp << ": warning: " << w << "\n";
+	for (const auto& w : s.warnings) vlo::logger().logStr(mrpt::system::LVL_WARN, w);
 	std::printf("%s: %zu frames (%zu images, %zu scans) in %.1f s (%.1f frames/s)\n", s.rawlog.c_str(), s.frames,
 		s.images, s.scans, s.seconds, s.seconds > 0 ? s.frames / s.seconds : 0.0);
 	if (!s.ground_truth.empty()) std::printf("%s: ground truth, vehicle frame\n", s.ground_truth.c_str());
@@ -39,7 +40,8 @@ int kittiOdometry(int argc, char** argv)
 			{"first", "I", "first frame (default 0)"}, {"last", "J", "last frame, inclusive (default: the last)"},
 			{"camera", "X", "camera 0..3: image_X with PX (default 0; 2 = left colour, stored grayscale)"},
 			{"camera-label", "L", "sensor label of the images (default CAMERA)"},
-			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}});
+			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"},
+			{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
 	if (cl.helpRequested())
 	{
 		std::cout << cl.usage("Usage: vlo-import kitti-odometry --root ROOT --seq NN --out FILE.rawlog [options]\n"
@@ -47,6 +49,7 @@ int kittiOdometry(int argc, char** argv)
 							  "without Tr in calib.txt the rawlog is camera-only (with a warning).");
 		return 0;
 	}
+	vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
 	vlo::KittiOdometryImport opt;
 	opt.root = cl.get("root");
 	opt.seq = cl.get("seq");
@@ -68,7 +71,8 @@ int kittiRaw(int argc, char** argv)
 			{"out", "FILE.rawlog", "output rawlog", true},
 			{"camera", "X", "camera 0..3 (default 2; colour images are stored grayscale)"},
 			{"camera-label", "L", "sensor label of the images (default CAMERA)"},
-			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}});
+			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"},
+			{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
 	if (cl.helpRequested())
 	{
 		std::cout << cl.usage("Usage: vlo-import kitti-raw --drive DIR --calib DIR --out FILE.rawlog [options]\n"
@@ -76,6 +80,7 @@ int kittiRaw(int argc, char** argv)
 							  "Times from image_0X/timestamps.txt and velodyne_points/timestamps.txt, else 10 Hz from 0.");
 		return 0;
 	}
+	vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
 	vlo::KittiRawImport opt;
 	opt.drive = cl.get("drive");
 	opt.calib = cl.get("calib");
@@ -100,7 +105,8 @@ int rosbag(int argc, char** argv)
 			{"vehicle-frame", "FRAME", "tf frame to use as vehicle frame (default: the LiDAR's frame)"},
 			{"reorder-window", "S", "seconds of header stamps held to sort messages (default 1)"},
 			{"out", "FILE.rawlog", "output rawlog"}, {"camera-label", "L", "sensor label of the images (default CAMERA)"},
-			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}});
+			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"},
+			{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
 	if (cl.helpRequested())
 	{
 		std::cout << cl.usage(
@@ -110,6 +116,7 @@ int rosbag(int argc, char** argv)
 			"Messages are written in header-stamp order with their own stamps; see doc/ROSBAG.md.");
 		return 0;
 	}
+	vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
 	if (cl.has("list"))
 	{
 		vlo::listRosbagTopics(cl.getAll("bag"), std::cout);
@@ -131,7 +138,7 @@ int rosbag(int argc, char** argv)
 	opt.camera_label = cl.get("camera-label", opt.camera_label);
 	opt.lidar_label = cl.get("lidar-label", opt.lidar_label);
 	const auto s = vlo::importRosbag(opt);
-	for (const auto& w : s.warnings) std::cerr << kApp << ": warning: " << w << "\n";
+	for (const auto& w : s.warnings) vlo::logger().logStr(mrpt::system::LVL_WARN, w);
 	const double mb = s.bag_bytes / 1e6;
 	std::printf("%s: %zu images, %zu scans (%zu non-finite points dropped), extrinsics from %s; %.1f MB of bags in %.1f s (%.1f MB/s)\n",
 		s.rawlog.c_str(), s.images, s.scans, s.dropped_points, s.extrinsics_source.c_str(), mb, s.seconds,

@@ -1,7 +1,7 @@
 // vlo-run: replays a rawlog through the estimators chosen in an INI file.
 #include <vlo/core/app_main.h>
 #include <vlo/core/cli.h>
-#include <vlo/core/progress.h>
+#include <vlo/core/log.h>
 #include <vlo/pipeline/run.h>
 
 #include <cstdio>
@@ -16,14 +16,14 @@ int main(int argc, char** argv)
 				{"out", "DIR", "output folder (created)", true, false},
 				{"set", "SEC.KEY=VAL", "override one option of the INI", false, true},
 				{"gt", "GT.tum", "ground truth, only drawn in the snapshots", false, false},
-				{"quiet", "", "no progress line", false, false}});
+				{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
 		if (cl.helpRequested())
 		{
 			std::cout << cl.usage("usage: vlo-run --rawlog FILE --ini INI --out DIR [--set section.key=value ...] [--gt GT.tum]\n\n"
 								  "Writes trajectory_<mode>.tum, frames.csv, map.pcd, run.ini, summary.json and snapshots/ in DIR.");
 			return 0;
 		}
-		if (cl.has("quiet")) vlo::ProgressLine::setEnabled(false);
+		vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
 		vlo::RunRequest req{cl.get("rawlog"), cl.get("ini"), cl.get("out"), cl.getAll("set"), cl.get("gt")};
 		const auto s = vlo::runPipeline(req);
 		std::printf("vlo-run: %zu frames in %.1f s (%.1f ms/frame), path %.1f m, largest step %.2f m -> %s/%s\n", s.frames,

@@ -2,6 +2,7 @@
 #include <vlo/core/app_main.h>
 #include <vlo/core/cli.h>
 #include <vlo/core/error.h>
+#include <vlo/core/log.h>
 #include <vlo/sim/sequence_writer.h>
 
 #include <chrono>
@@ -25,7 +26,7 @@ int main(int argc, char** argv)
 				{"no-noise", "", "no image noise, range noise or dropouts (for checks)"},
 				{"foliage-depth", "M", "mean depth of LiDAR returns inside tree crowns and bushes (default 0: solid hulls)"},
 				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
-				{"quiet", "", "no progress line and no summary"}});
+				{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
 		if (cl.helpRequested())
 		{
 			std::cout << cl.usage("vlo-sim --out FILE.rawlog [options]\n\n"
@@ -61,23 +62,21 @@ int main(int argc, char** argv)
 			cfg.blackout_first = first;
 			cfg.blackout_end = end;
 		}
-		const bool quiet = cl.has("quiet");
+		vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
 
 		std::string cmd = "vlo-sim";
 		for (int i = 1; i < argc; ++i) cmd += std::string(" ") + argv[i];
 		const auto t0 = std::chrono::steady_clock::now();
 		vlo::sim::Simulator sim(cfg);
 		const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-		if (!quiet) std::cerr << "vlo-sim: " << sim.summary() << " (built in " << setup << " s)\n";
+		vlo::logger().logStr(mrpt::system::LVL_INFO, sim.summary() + " (built in " + std::to_string(setup) + " s)");
 
 		vlo::sim::OutputOptions out;
 		out.rawlog = cl.get("out");
 		out.kitti_dir = cl.get("kitti-dir");
 		out.description = cmd;
-		out.progress = !quiet;
 		const auto st = vlo::sim::writeSequence(sim, out);
-		if (!quiet)
-			std::fprintf(stderr, "vlo-sim: %d frames, %.0f points/frame, %.2f s/frame (%.1f s + %.1f s setup) -> %s, %s%s%s\n",
+		std::printf("vlo-sim: %d frames, %.0f points/frame, %.2f s/frame (%.1f s + %.1f s setup) -> %s, %s%s%s\n",
 				st.frames, st.points_per_frame, st.seconds / st.frames, st.seconds, setup, out.rawlog.c_str(),
 				st.ground_truth.c_str(), out.kitti_dir.empty() ? "" : ", ", out.kitti_dir.c_str());
 		return 0;

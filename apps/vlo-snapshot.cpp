@@ -4,6 +4,7 @@
 #include <vlo/core/app_main.h>
 #include <vlo/core/cli.h>
 #include <vlo/core/error.h>
+#include <vlo/core/log.h>
 #include <vlo/io/pcd.h>
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/io/trajectory.h>
@@ -84,7 +85,8 @@ int run(int argc, char** argv)
 			{"rawlog", "R.rawlog", "rawlog with CAMERA and LIDAR observations"},
 			{"frame", "K", "frame index in --rawlog to draw with the projected scan (default 0)", false, true},
 			{"title", "TEXT", "title above the top-down and 3D views"},
-			{"out", "DIR", "output folder (created if missing)", true}});
+			{"out", "DIR", "output folder (created if missing)", true},
+			{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
 	if (cl.helpRequested())
 	{
 		std::cout << cl.usage("vlo-snapshot --traj A.tum [--traj B.tum ...] [--name A ...] [--gt GT.tum]\n"
@@ -94,6 +96,7 @@ int run(int argc, char** argv)
 							  "Headless: no display is needed. See doc/SNAPSHOTS.md.");
 		return 0;
 	}
+	vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
 	const auto trajFiles = cl.getAll("traj"), names = cl.getAll("name");
 	if (names.size() > trajFiles.size())
 		failInput("--name",

@@ -28,6 +28,23 @@ run_case() {
 run_case hdl64 hdl64 sim-hdl64.ini 40 1.5 0.3
 run_case vlp16 vlp16 vlp16.ini 40 3.0 0.5
 
+# Verbosity: the table of times per stage unless --quiet, debug lines with --verbose; the final line always.
+for v in "" --verbose --quiet; do
+	rm -rf out_v
+	"$BIN/vlo-run" --rawlog hdl64.rawlog --ini "$INI/sim-hdl64.ini" --out out_v --set pipeline.mode=lo \
+		--set pipeline.max_frames=5 --set pipeline.snapshots=false $v > out.txt 2> err.txt || fail "vlo-run $v failed"
+	grep -q "^vlo-run: 5 frames in" out.txt || fail "vlo-run $v: no final line: $(cat out.txt)"
+	grep -q "^ms_lo_mapping .* 5$" err.txt && grep -q "^vlo-run: time per stage over 5 frames" err.txt
+	table=$?
+	grep -q "^vlo-run: debug: mode lo" err.txt
+	debug=$?
+	case "$v" in
+	"") [ $table -eq 0 ] && [ $debug -ne 0 ] || fail "default: $(cat err.txt)" ;;
+	--verbose) [ $table -eq 0 ] && [ $debug -eq 0 ] || fail "--verbose: $(cat err.txt)" ;;
+	--quiet) [ ! -s err.txt ] || fail "--quiet: stderr: $(cat err.txt)" ;;
+	esac
+done
+
 # expect_bad NAME TEXT ARGS...: non-zero exit, one stderr line with TEXT, no output folder
 expect_bad() {
 	local name=$1 text=$2

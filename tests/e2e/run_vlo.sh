@@ -40,6 +40,17 @@ valid=$(jv vlo/summary.json scale_valid)
 echo "scale estimates valid: $valid"
 below 20 "$valid" || fail "fewer than 20 valid scale estimates"
 
+# frames.csv's column order as doc/FORMATS.md documents it, and no signed zero.
+head -1 vlo/frames.csv | python3 -c '
+import sys
+h = sys.stdin.read().strip().split(",")
+modules = [c.split("_")[0] for c in h[5:] if not c.startswith("ms_")]
+timing = [c for c in h if c.startswith("ms_")]
+ok = h[:5] == ["frame", "t", "x", "y", "z"] and h[-1] == "ms_total" and h[len(h) - len(timing):] == timing
+ok = ok and modules == sorted(modules, key=["vo", "scale", "lo"].index)
+sys.exit(0 if ok else "header: " + ",".join(h))' || fail "frames.csv column order"
+! grep -qE '(^|,)-0(\.0+)?(,|$)' vlo/frames.csv || fail "frames.csv holds a negative zero: $(grep -m1 -oE '(^|,)-0(\.0+)?(,|$)' vlo/frames.csv)"
+
 # Rows whose vo_reason holds a comma keep their later columns: every lo_prior is one of LOAM's sources.
 grep -q '"initialised (.*,' vlo/frames.csv || fail "no quoted vo_reason with a comma in frames.csv"
 [ "$(column vlo/frames.csv lo_prior | grep -cvxE 'none|constant_velocity|external')" -eq 0 ] ||

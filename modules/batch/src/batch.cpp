@@ -6,6 +6,7 @@
 #include <vlo/batch/tables.h>
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
+#include <vlo/core/log.h>
 
 #include <unistd.h>
 
@@ -82,7 +83,7 @@ std::size_t writeResults(const Plan& plan, const std::string& out)
 
 void report(const char* what, const TaskResult& r, std::size_t done, std::size_t total, const std::string& why)
 {
-	std::fprintf(stderr, "vlo-batch: %s %zu/%zu %s: %s, %.1f s%s%s\n", what, done, total, r.name.c_str(),
+	logger().logFmt(mrpt::system::LVL_INFO, "%s %zu/%zu %s: %s, %.1f s%s%s", what, done, total, r.name.c_str(),
 		r.exit_code == 0 ? "ok" : "FAILED", r.seconds, why.empty() ? "" : ": ", why.c_str());
 }
 }  // namespace
@@ -159,8 +160,8 @@ void emitJobs(const BatchOptions& o)
 	{
 		std::string names;
 		for (const auto& m : missing) names += (names.empty() ? "" : ", ") + m;
-		std::fprintf(stderr, "vlo-batch: note: not generated yet: %s; emit them with --emit-data FILE and run those "
-			"lines first\n", names.c_str());
+		logger().logStr(mrpt::system::LVL_WARN,
+			"not generated yet: " + names + "; emit them with --emit-data FILE and run those lines first");
 	}
 	std::printf("vlo-batch: then: %s/vlo-batch --collect %s\n", o.bin_dir.c_str(), out.c_str());
 }

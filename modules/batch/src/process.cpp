@@ -1,4 +1,5 @@
 #include <vlo/batch/process.h>
+#include <vlo/core/log.h>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -74,7 +75,7 @@ std::vector<TaskResult> runTasks(const std::vector<Task>& tasks, int jobs, const
 				}
 				catch (const std::exception& e)
 				{
-					std::fprintf(stderr, "vlo-batch: error: %s: %s\n", tasks[next].name.c_str(), e.what());
+					logger().logStr(mrpt::system::LVL_ERROR, tasks[next].name + ": " + e.what());
 				}
 				std::fflush(nullptr);
 				_exit(code);  // no static destructors of the parent's state in the child

@@ -1,5 +1,6 @@
 #include <vlo/batch/jobs.h>
 #include <vlo/batch/snapshots.h>
+#include <vlo/core/log.h>
 #include <vlo/viz/topdown.h>
 
 #include <filesystem>
@@ -47,7 +48,7 @@ std::vector<std::string> writeSnapshots(const Plan& plan, const std::vector<RunR
 		catch (const std::exception& e)
 		{
 			std::string msg = e.what();
-			std::cerr << "vlo-batch: warning: " << rel << " not written: " << msg.substr(0, msg.find('\n')) << std::endl;
+			logger().logStr(mrpt::system::LVL_WARN, rel + " not written: " + msg.substr(0, msg.find('\n')));
 		}
 	}
 	return written;

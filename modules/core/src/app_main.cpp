@@ -1,6 +1,7 @@
 #include <vlo/core/app_main.h>
 #include <vlo/core/error.h>
 #include <vlo/core/interrupt.h>
+#include <vlo/core/log.h>
 
 #include <iostream>
 
@@ -9,18 +10,20 @@ namespace vlo
 int runApp(const std::string& app, const std::function<int()>& body)
 {
 	installInterruptHandler();
+	setupLogging(app);
 	try
 	{
 		return body();
 	}
 	catch (const Interrupted&)
 	{
+		// The last line of an interrupted run, like an app's final line: not a log message, shown with --quiet too.
 		std::cerr << app << ": interrupted: the outputs it was writing are removed" << std::endl;
 		return 130;
 	}
 	catch (const InputError& e)
 	{
-		std::cerr << app << ": error: " << e.what() << std::endl;
+		logger().logStr(mrpt::system::LVL_ERROR, e.what());
 		return 2;
 	}
 	catch (const std::exception& e)
@@ -29,7 +32,7 @@ int runApp(const std::string& app, const std::function<int()>& body)
 		std::string msg = e.what();
 		const auto nl = msg.find('\n');
 		if (nl != std::string::npos) msg.resize(nl);
-		std::cerr << app << ": error: " << msg << std::endl;
+		logger().logStr(mrpt::system::LVL_ERROR, msg);
 		return 1;
 	}
 }

@@ -1,11 +1,11 @@
 #include "kitti_import_common.h"
 
 #include <vlo/core/error.h>
+#include <vlo/core/stopwatch.h>
 #include <vlo/io/kitti_calib.h>
 #include <vlo/io/kitti_import.h>
 #include <vlo/io/trajectory.h>
 
-#include <chrono>
 #include <filesystem>
 
 namespace vlo
@@ -32,7 +32,7 @@ Trajectory groundTruth(const std::string& poses, const std::vector<double>& time
 
 ImportSummary importKittiOdometry(const KittiOdometryImport& opt)
 {
-	const auto start = std::chrono::steady_clock::now();
+	const auto start = SteadyClock::now();
 	ImportSummary summary;
 	summary.rawlog = opt.out;
 	const std::string seq = (fs::path(opt.root) / "sequences" / opt.seq).string();
@@ -98,7 +98,7 @@ ImportSummary importKittiOdometry(const KittiOdometryImport& opt)
 		summary.ground_truth = groundTruthPathFor(opt.out);
 		writeTum(summary.ground_truth, gt);
 	}
-	summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	summary.seconds = msSince(start) / 1000.0;
 	return summary;
 }
 }  // namespace vlo

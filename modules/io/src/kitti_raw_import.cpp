@@ -1,11 +1,11 @@
 #include "kitti_import_common.h"
 
 #include <vlo/core/error.h>
+#include <vlo/core/stopwatch.h>
 #include <vlo/io/kitti_calib.h>
 #include <vlo/io/kitti_files.h>
 #include <vlo/io/kitti_import.h>
 
-#include <chrono>
 #include <filesystem>
 
 namespace vlo
@@ -26,7 +26,7 @@ std::vector<double> timesIfPresent(const std::string& path, long max_index)
 
 ImportSummary importKittiRaw(const KittiRawImport& opt)
 {
-	const auto start = std::chrono::steady_clock::now();
+	const auto start = SteadyClock::now();
 	ImportSummary summary;
 	summary.rawlog = opt.out;
 	if (opt.camera < 0 || opt.camera > 3) failInput("--camera", "must be 0, 1, 2 or 3");
@@ -79,7 +79,7 @@ ImportSummary importKittiRaw(const KittiRawImport& opt)
 	rig.vehicle_T_camera = calib.camera_T_velo.inverse();
 	rig.has_lidar = lidar;
 	writeKittiFrames(frames, rig, opt.camera_label, opt.lidar_label, "kitti-raw", summary);
-	summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	summary.seconds = msSince(start) / 1000.0;
 	return summary;
 }
 }  // namespace vlo

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 namespace vlo
 {
@@ -17,6 +18,18 @@ std::string csvCell(const std::string& s)
 	std::string q = "\"";
 	for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
 	return q + "\"";
+}
+
+/// printf rounds -0.0001 to "-0.000": a sign on a zero says nothing and breaks textual comparisons.
+std::string withoutNegativeZero(std::string s)
+{
+	if (!s.empty() && s[0] == '-' && s.find_first_not_of("0.", 1) == std::string::npos) s.erase(0, 1);
+	return s;
+}
+
+std::string moduleOf(const std::string& column)
+{
+	return column.substr(0, column.find('_'));
 }
 }  // namespace
 
@@ -34,10 +47,32 @@ void FrameTable::set(const std::string& column, double value, int decimals)
 	if (!std::isfinite(value)) return set(column, std::string("nan"));
 	char buf[64];
 	std::snprintf(buf, sizeof(buf), "%.*f", decimals, value);
-	set(column, std::string(buf));
+	set(column, withoutNegativeZero(buf));
 }
 
 void FrameTable::set(const std::string& column, long long value) { set(column, std::to_string(value)); }
+
+std::vector<std::string> FrameTable::columns() const
+{
+	static const std::vector<std::string> leading{"frame", "t", "x", "y", "z"};
+	std::vector<std::string> modules;  // in the order each first wrote a column
+	for (const auto& c : columns_)
+		if (c.rfind("ms_", 0) != 0 && std::find(leading.begin(), leading.end(), c) == leading.end() &&
+			std::find(modules.begin(), modules.end(), moduleOf(c)) == modules.end())
+			modules.push_back(moduleOf(c));
+	const auto rank = [&](const std::string& c) -> std::size_t {
+		const auto lead = std::find(leading.begin(), leading.end(), c);
+		if (lead != leading.end()) return static_cast<std::size_t>(lead - leading.begin());
+		const bool timing = c.rfind("ms_", 0) == 0;
+		if (c == "ms_total") return std::numeric_limits<std::size_t>::max();
+		const std::string m = moduleOf(timing ? c.substr(3) : c);
+		const auto mi = static_cast<std::size_t>(std::find(modules.begin(), modules.end(), m) - modules.begin());
+		return leading.size() + (timing ? modules.size() + 1 : 0) + mi;
+	};
+	std::vector<std::string> ordered = columns_;
+	std::stable_sort(ordered.begin(), ordered.end(), [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
+	return ordered;
+}
 
 std::string FrameTable::cell(std::size_t row, const std::string& column) const
 {
@@ -62,15 +97,16 @@ std::vector<double> FrameTable::numbers(const std::string& column) const
 
 void FrameTable::write(const std::string& path) const
 {
+	const std::vector<std::string> order = columns();
 	AtomicOutputFile f(path);
 	auto& out = f.stream();
-	for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << columns_[c];
+	for (std::size_t c = 0; c < order.size(); ++c) out << (c ? "," : "") << order[c];
 	out << '\n';
 	for (const auto& r : rows_)
 	{
-		for (std::size_t c = 0; c < columns_.size(); ++c)
+		for (std::size_t c = 0; c < order.size(); ++c)
 		{
-			const auto it = r.find(columns_[c]);
+			const auto it = r.find(order[c]);
 			out << (c ? "," : "") << (it == r.end() ? "" : csvCell(it->second));
 		}
 		out << '\n';

@@ -32,3 +32,37 @@ TEST(FrameTable, ColumnsInFirstSeenOrderAndCsvQuoting)
 	EXPECT_EQ(ss.str(), "frame,reason,scale\n0,\"too few, \"\"sharp\"\" points\",\n1,,1.023\n");
 	std::remove("frame_table_test.csv");
 }
+
+TEST(FrameTable, DocumentedColumnOrderWhateverTheOrderOfWriting)
+{
+	FrameTable t;
+	t.set("frame", 0LL);
+	t.set("t", 0.0, 6);
+	t.set("vo_state", std::string("OK"));
+	t.set("ms_vo_track", 1.0, 2);
+	t.set("lo_status", std::string("ok"));
+	t.set("ms_lo_mapping", 2.0, 2);
+	t.set("x", 1.0, 3);
+	t.set("y", 2.0, 3);
+	t.set("z", 3.0, 3);
+	t.set("ms_total", 4.0, 2);
+	t.newRow();
+	t.set("scale_s", 1.0, 3);  // a module that starts writing at a later frame
+	t.set("ms_scale", 1.0, 2);
+	t.set("vo_metric_motion", true);
+	EXPECT_EQ(t.columns(), (std::vector<std::string>{"frame", "t", "x", "y", "z", "vo_state", "vo_metric_motion", "lo_status",
+							   "scale_s", "ms_vo_track", "ms_lo_mapping", "ms_scale", "ms_total"}));
+}
+
+TEST(FrameTable, NoNegativeZero)
+{
+	FrameTable t;
+	t.set("a", -0.0001, 3);
+	t.set("b", -0.0, 2);
+	t.set("c", -0.0006, 3);
+	t.set("d", -1e-9, 0);
+	EXPECT_EQ(t.cell(0, "a"), "0.000");
+	EXPECT_EQ(t.cell(0, "b"), "0.00");
+	EXPECT_EQ(t.cell(0, "c"), "-0.001");
+	EXPECT_EQ(t.cell(0, "d"), "0");
+}

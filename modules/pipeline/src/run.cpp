@@ -1,5 +1,6 @@
 // The run loop, as the paper's figure: frame -> motion source -> LiDAR odometry -> outputs.
 #include <vlo/core/error.h>
+#include <vlo/core/log.h>
 #include <vlo/core/progress.h>
 #include <vlo/core/stopwatch.h>
 #include <vlo/io/rawlog_reader.h>
@@ -12,6 +13,7 @@
 #include <vlo/pipeline/pipeline_options.h>
 #include <vlo/pipeline/run.h>
 #include <vlo/pipeline/run_outputs.h>
+#include <vlo/pipeline/stage_timings.h>
 
 #include <unistd.h>
 
@@ -91,6 +93,8 @@ RunSummary runPipeline(const RunRequest& req)
 	popt.validate(config.origin());
 	const RunPlan plan = popt.plan();
 	Stages stages = makeStages(popt, plan, config);
+	logger().logFmt(mrpt::system::LVL_DEBUG, "mode %s: motion source '%s', LiDAR odometry '%s'", plan.name.c_str(),
+		plan.motion_source.empty() ? "none" : plan.motion_source.c_str(), plan.lidar_odometry ? popt.lidar_odometry.c_str() : "none");
 	checkOutputDir(req.out);
 
 	RawlogReaderOptions ropt;
@@ -153,6 +157,9 @@ RunSummary runPipeline(const RunRequest& req)
 	summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;
 	summary.reader_stats = reader.statsSummary();
 	writeSummaryJson(req.out + "/summary.json", summary, req);
+	logger().logStr(mrpt::system::LVL_DEBUG, summary.reader_stats);
+	logger().logStr(mrpt::system::LVL_INFO, "time per stage over " + std::to_string(summary.frames) + " frames (frames.csv):\n" +
+			formatStageTimings(stageTimings(outputs.table)));
 	return summary;
 }
 }  // namespace vlo

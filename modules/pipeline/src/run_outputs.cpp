@@ -1,5 +1,6 @@
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
+#include <vlo/core/log.h>
 #include <vlo/io/pcd.h>
 #include <vlo/pipeline/run_outputs.h>
 #include <vlo/viz/map3d.h>
@@ -11,7 +12,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <iostream>
 
 namespace vlo
 {
@@ -104,7 +104,7 @@ RunSummary RunOutputs::write(
 		}
 		catch (const std::exception& e)
 		{
-			std::cerr << "vlo-run: warning: snapshots not written: " << e.what() << std::endl;
+			logger().logStr(mrpt::system::LVL_WARN, std::string("snapshots not written: ") + e.what());
 		}
 	}
 	return s;

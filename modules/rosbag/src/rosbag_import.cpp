@@ -1,5 +1,6 @@
 #include <vlo/core/error.h>
 #include <vlo/core/progress.h>
+#include <vlo/core/stopwatch.h>
 #include <vlo/io/kitti_import.h>
 #include <vlo/io/rawlog_writer.h>
 #include <vlo/io/trajectory.h>
@@ -21,7 +22,6 @@
 #include <boost/make_shared.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <ostream>
 
@@ -259,7 +259,7 @@ class MessageDecoder
 
 RosbagImportSummary importRosbag(const RosbagImport& opt)
 {
-	const auto start = std::chrono::steady_clock::now();
+	const auto start = SteadyClock::now();
 	RosbagImportSummary summary;
 	summary.rawlog = opt.out;
 	if (!(opt.reorder_window >= 0)) failInput("--reorder-window", "must be a number of seconds >= 0");
@@ -331,7 +331,7 @@ RosbagImportSummary importRosbag(const RosbagImport& opt)
 		writeTum(summary.ground_truth, gt);
 		summary.gt_poses = gt.size();
 	}
-	summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	summary.seconds = msSince(start) / 1000.0;
 	return summary;
 }
 

@@ -1,10 +1,10 @@
 #include <vlo/core/progress.h>
+#include <vlo/core/stopwatch.h>
 #include <vlo/io/kitti_import.h>
 #include <vlo/io/rawlog_writer.h>
 #include <vlo/sim/kitti_export.h>
 #include <vlo/sim/sequence_writer.h>
 
-#include <chrono>
 #include <cstdio>
 #include <memory>
 
@@ -12,7 +12,7 @@ namespace vlo::sim
 {
 RunStats writeSequence(Simulator& sim, const OutputOptions& out)
 {
-	const auto start = std::chrono::steady_clock::now();
+	const auto start = SteadyClock::now();
 	// Both writers keep their output under ".partial" names until they commit: an error (or Ctrl-C)
 	// half-way leaves no file that looks complete.
 	RawlogWriter rawlog(out.rawlog);
@@ -46,7 +46,7 @@ RunStats writeSequence(Simulator& sim, const OutputOptions& out)
 	}
 	st.frames = sim.frameCount();
 	st.points_per_frame = st.frames ? double(points) / st.frames : 0;
-	st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	st.seconds = msSince(start) / 1000.0;
 	return st;
 }
 }  // namespace vlo::sim

@@ -1,7 +1,6 @@
 // Map (re-)initialisation inside VisualOdometry, and the placement of a new map in the trajectory.
 #include <vlo/core/se3.h>
-
-#include <chrono>
+#include <vlo/core/stopwatch.h>
 
 #include "vo_impl.h"
 
@@ -9,12 +8,12 @@ namespace vlo::vo
 {
 void VisualOdometry::Impl::initialise(TrackedFrame& cur, VoFrameInfo& inf)
 {
-	const auto t0 = std::chrono::steady_clock::now();
+	const auto t0 = SteadyClock::now();
 	InitResult r = init.feed(cur);
 	inf.matches = r.matches;
 	inf.reason = r.reason;
 	if (r.ok) startMap(r, cur, inf);
-	inf.ms_mapping += r.ok ? std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() : 0.0;
+	inf.ms_mapping += r.ok ? msSince(t0) : 0.0;
 }
 
 void VisualOdometry::Impl::startMap(InitResult& r, TrackedFrame& cur, VoFrameInfo& inf)

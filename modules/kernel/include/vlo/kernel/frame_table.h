@@ -1,6 +1,7 @@
 #pragma once
-// The per-frame table written as frames.csv: each module sets its own columns for the current row;
-// the column order is the order in which columns first appeared. Missing cells stay empty.
+// The per-frame table written as frames.csv: each module sets its own columns for the current row.
+// Missing cells stay empty. Column order (doc/FORMATS.md): frame, t, x, y, z; then each module's
+// columns; then the milliseconds (ms_*), ms_total last.
 #include <map>
 #include <string>
 #include <vector>
@@ -13,12 +14,16 @@ class FrameTable
 	/// Starts a new row; later set() calls fill it.
 	void newRow();
 	void set(const std::string& column, const std::string& value);
+	/// Fixed decimals; a value that rounds to zero is written without a sign ("0.000", never "-0.000").
 	void set(const std::string& column, double value, int decimals = 4);
 	void set(const std::string& column, long long value);
 	void set(const std::string& column, bool value) { set(column, std::string(value ? "1" : "0")); }
 
 	std::size_t rows() const { return rows_.size(); }
-	const std::vector<std::string>& columns() const { return columns_; }
+	/// In the CSV's order: the leading columns, then modules by the order each first wrote (a module
+	/// is the prefix up to the first '_': vo, scale, lo), each module's columns in first-seen order;
+	/// then the ms_<module>* columns in the same module order, ms_total last.
+	std::vector<std::string> columns() const;
 	/// Cell text ("" when never set); throws std::out_of_range for a bad row.
 	std::string cell(std::size_t row, const std::string& column) const;
 	/// Numeric column values, NaN where empty or not a number.

@@ -55,7 +55,7 @@ sed 's/^align = sim3/align = sim4/' tiny.ini > bad_align.ini
 sed 's/^kitti_lengths/kitti_length/' tiny.ini > bad_key.ini
 sed 's/^\[config broken\]/[config lo]/' tiny.ini > bad_twice.ini
 grep -v '^sim = ' tiny.ini > bad_nosim.ini
-expect_bad "bad align" "bad_align.ini: [config vo] align: must be se3, sim3 or none, got 'sim4'" bad_align.ini
+expect_bad "bad align" "bad_align.ini: [config vo] align: 'sim4' is not one of se3, sim3, none (did you mean sim3?)" bad_align.ini
 expect_bad "unknown key" "bad_key.ini: [plan]: unknown key 'kitti_length'" bad_key.ini
 expect_bad "repeated config" "bad_twice.ini: line 19: section [config lo] given twice" bad_twice.ini
 expect_bad "no data" "bad_nosim.ini: [sequence tiny] rawlog: $W/data/tiny.rawlog does not exist" bad_nosim.ini

@@ -42,7 +42,7 @@ run_case vlo 0.6 0.06
 rm -rf bad_out
 "$BIN/vlo-run" --rawlog drive.rawlog --ini "$INI/sim-hdl64.ini" --out bad_out --quiet \
 	--set pipeline.lidar_odometry=icp --set icp.voxel_size=0 > /dev/null 2> err.txt && fail "bad [icp] value: exit 0"
-grep -qF "[icp] voxel_size: must be > 0" err.txt || fail "bad [icp] value: $(cat err.txt)"
+grep -qF -- "--set icp.voxel_size=0: must be > 0" err.txt || fail "bad [icp] value: $(cat err.txt)"
 [ ! -e bad_out/trajectory_lo.tum ] && [ ! -e bad_out/trajectory_vlo.tum ] || fail "bad [icp] value: trajectory left behind"
 
 finish run_icp

@@ -64,7 +64,7 @@ expect_bad "missing rawlog" "nope.rawlog" --rawlog nope.rawlog --ini "$INI/sim-h
 expect_bad "missing ini" "nope.ini" --rawlog hdl64.rawlog --ini nope.ini
 expect_bad "unknown key" "unknown key 'ring_modle'" --rawlog hdl64.rawlog --ini typo.ini
 expect_bad "bad value" "expects a number" --rawlog hdl64.rawlog --ini badvalue.ini
-expect_bad "bad mode" "must be lo, vo or vlo" --rawlog hdl64.rawlog --ini badmode.ini
+expect_bad "bad mode" "badmode.ini: [pipeline] mode: 'fast' is not one of lo, vo, vlo" --rawlog hdl64.rawlog --ini badmode.ini
 expect_bad "unknown label" "VELODYNE" --rawlog hdl64.rawlog --ini badlabel.ini
 expect_bad "bad --set" "section.key=value" --rawlog hdl64.rawlog --ini "$INI/sim-hdl64.ini" --set nodot
 head -c 3000000 hdl64.rawlog > truncated.rawlog && cp -r hdl64_Images truncated_Images

@@ -17,10 +17,6 @@ namespace vlo::batch
 {
 namespace
 {
-const std::set<std::string> kPlanKeys{"data", "kitti_lengths", "kitti_step", "source"};
-const std::set<std::string> kSequenceKeys{"rawlog", "gt", "ini", "sim", "gt_translation_only", "kitti_calib"};
-const std::set<std::string> kConfigKeys{"set", "align", "ini"};
-
 /// Names become folder names and table labels: keep them to safe characters.
 void checkName(const std::string& name, const std::string& where)
 {
@@ -28,12 +24,6 @@ void checkName(const std::string& name, const std::string& where)
 	for (const char c : name)
 		if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) ok = false;
 	if (!ok) failInput(where, "the name '" + name + "' may only hold letters, digits, '_', '-' and '.'");
-}
-
-void checkKeys(const IniSection& s, const std::set<std::string>& known, const std::string& origin)
-{
-	for (const auto& k : s.keys)
-		if (!known.count(k)) failInput(origin + ": [" + s.name + "]", "unknown key '" + k + "' (see doc/BATCH.md)");
 }
 
 void checkLengths(const std::string& v, const std::string& where)
@@ -47,32 +37,27 @@ void checkLengths(const std::string& v, const std::string& where)
 	}
 }
 
-int positiveInt(const std::string& v, const std::string& where)
-{
-	char* end = nullptr;
-	const long n = std::strtol(v.c_str(), &end, 10);
-	if (v.empty() || *end != '\0' || n < 1 || n > 1000000) failInput(where, "must be a positive integer, got '" + v + "'");
-	return static_cast<int>(n);
-}
-
 Sequence readSequence(
 	const SectionReader& r, const std::string& name, const std::string& plan_dir, const std::string& data, bool check_files)
 {
+	SequenceKeys k;
+	k.rawlog = name + ".rawlog";
+	r.load(k);
 	Sequence s;
 	s.name = name;
-	s.rawlog = absolutePath(r.get("rawlog", name + ".rawlog"), data);
-	s.gt = absolutePath(r.get("gt", groundTruthPathFor(s.rawlog)), data);
+	s.rawlog = absolutePath(k.rawlog, data);
+	s.gt = absolutePath(r.has("gt") ? k.gt : groundTruthPathFor(s.rawlog), data);
 	if (!r.has("ini")) failInput(r.where("ini"), "missing (the base INI of the sensor, e.g. ../sim-hdl64.ini)");
-	s.ini = absolutePath(r.get("ini"), plan_dir);
+	s.ini = absolutePath(k.ini, plan_dir);
 	if (check_files && !fs::is_regular_file(s.ini)) failInput(r.where("ini"), s.ini + " does not exist");
-	s.gt_translation_only = r.getBool("gt_translation_only", false);
+	s.gt_translation_only = k.gt_translation_only;
 	if (r.has("kitti_calib"))
 	{
-		s.kitti_calib = absolutePath(r.get("kitti_calib"), data);
+		s.kitti_calib = absolutePath(k.kitti_calib, data);
 		if (check_files && !fs::is_regular_file(s.kitti_calib))
 			failInput(r.where("kitti_calib"), s.kitti_calib + " does not exist");
 	}
-	const auto sim = splitWords(r.get("sim"), r.where("sim"));
+	const auto sim = splitWords(k.sim, r.where("sim"));
 	if (r.has("sim") && sim.empty()) failInput(r.where("sim"), "empty (give vlo-sim arguments or leave the key out)");
 	if (!sim.empty())
 	{
@@ -89,23 +74,23 @@ Sequence readSequence(
 
 Config readConfig(const SectionReader& r, const std::string& name, const std::string& plan_dir, bool check_files)
 {
+	ConfigKeys k;
+	r.load(k);
 	Config c;
 	c.name = name;
 	if (r.has("ini"))
 	{
-		c.ini = absolutePath(r.get("ini"), plan_dir);
+		c.ini = absolutePath(k.ini, plan_dir);
 		if (check_files && !fs::is_regular_file(c.ini)) failInput(r.where("ini"), c.ini + " does not exist");
 	}
-	c.overrides = splitWords(r.get("set"), r.where("set"));
+	c.overrides = splitWords(k.set, r.where("set"));
 	for (const auto& o : c.overrides)
 	{
 		const auto dot = o.find('.'), eq = o.find('=');
 		if (dot == std::string::npos || eq == std::string::npos || dot > eq)
 			failInput(r.where("set"), "'" + o + "' is not section.key=value");
 	}
-	c.align = r.get("align", "se3");
-	if (c.align != "se3" && c.align != "sim3" && c.align != "none")
-		failInput(r.where("align"), "must be se3, sim3 or none, got '" + c.align + "'");
+	c.align = k.align;
 	return c;
 }
 }  // namespace
@@ -140,18 +125,21 @@ Plan parsePlan(const std::string& text, const std::string& origin, const std::st
 		const SectionReader r(ini, origin, s.name);
 		if (kind == "plan" && name.empty())
 		{
-			checkKeys(s, kPlanKeys, origin);
-			data = r.get("data", data);
-			plan.kitti_lengths = r.get("kitti_lengths");
+			PlanKeys k;
+			k.data = data;
+			k.kitti_step = plan.kitti_step;
+			k.source = plan.source;
+			r.load(k);
+			data = k.data;
+			plan.kitti_lengths = k.kitti_lengths;
 			if (r.has("kitti_lengths")) checkLengths(plan.kitti_lengths, r.where("kitti_lengths"));
-			if (r.has("kitti_step")) plan.kitti_step = positiveInt(r.get("kitti_step"), r.where("kitti_step"));
-			if (r.has("source")) plan.source = r.get("source");
+			plan.kitti_step = k.kitti_step;
+			plan.source = k.source;
 			continue;
 		}
 		if ((kind != "sequence" && kind != "config") || name.empty() || !extra.empty())
 			failInput(at, "unknown section (expected [plan], [sequence NAME] or [config NAME])");
 		checkName(name, at);
-		checkKeys(s, kind == "sequence" ? kSequenceKeys : kConfigKeys, origin);
 		if (!seen.insert(kind + " " + name).second) failInput(at, "the " + kind + " name '" + name + "' is given twice");
 	}
 	plan.data_dir = absolutePath(data_dir.empty() ? data : data_dir, ".");

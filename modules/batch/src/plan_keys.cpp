@@ -2,6 +2,7 @@
 
 #include <vlo/core/error.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 
@@ -9,18 +10,47 @@ namespace fs = std::filesystem;
 
 namespace vlo::batch
 {
-std::string SectionReader::get(const std::string& key, const std::string& fallback) const
+void PlanKeys::declare(OptionTable& t)
 {
-	return has(key) ? ini_.read_string(section_, key, fallback) : fallback;
+	t.add("data", data, "any", "folder of the sequences' rawlogs, relative to the working folder");
+	t.add("kitti_lengths", kitti_lengths, "any", "comma-separated segment lengths [m] of the KITTI metric");
+	t.add("kitti_step", kitti_step, "[1, 1000000]", "frames between KITTI metric segment starts");
+	t.add("source", source, "any", "what the tables name as the plan's source");
 }
 
-bool SectionReader::getBool(const std::string& key, bool fallback) const
+void SequenceKeys::declare(OptionTable& t)
 {
-	if (!has(key)) return fallback;
-	const std::string v = get(key);
-	if (v == "true" || v == "1" || v == "yes") return true;
-	if (v == "false" || v == "0" || v == "no") return false;
-	failInput(where(key), "expects true or false, got '" + v + "'");
+	t.add("rawlog", rawlog, "any", "the recording (default NAME.rawlog in the data folder)");
+	t.add("gt", gt, "any", "ground truth TUM file (default beside the rawlog)");
+	t.add("ini", ini, "any", "the sensor's base INI, relative to the plan");
+	t.add("sim", sim, "any", "vlo-sim arguments that generate the rawlog when it is missing");
+	t.add("gt_translation_only", gt_translation_only, "true | false", "the ground truth has no orientation");
+	t.add("kitti_calib", kitti_calib, "any", "KITTI calib.txt for the camera-frame metric");
+}
+
+void ConfigKeys::declare(OptionTable& t)
+{
+	t.add("set", set, "any", "vlo-run --set overrides, section.key=value separated by spaces");
+	t.add("align", align, "se3 | sim3 | none", "trajectory alignment of the evaluation");
+	t.add("ini", ini, "any", "an INI that replaces the sequence's, relative to the plan");
+}
+
+void SectionReader::load(OptionSet& keys) const
+{
+	std::vector<std::string> known, given;
+	for (const auto& row : keys.rows()) known.push_back(row.key);
+	ini_.getAllKeys(section_, given);
+	for (const auto& k : given)
+		if (std::find(known.begin(), known.end(), k) == known.end())
+			failInput(origin_ + ": [" + section_ + "]", "unknown key '" + k + "'" + didYouMean(k, known) + " (see doc/BATCH.md)");
+	try
+	{
+		keys.loadFromConfigFile(ini_, section_);
+	}
+	catch (const OptionError& e)
+	{
+		failInput(where(e.key()), e.problem());
+	}
 }
 
 std::string absolutePath(const std::string& p, const std::string& base)

@@ -1,13 +1,43 @@
 #pragma once
-// Helpers shared by the plan reader's files: reading one section's values with errors that name the
-// plan file, the section and the key.
+// The keys of a plan's sections, declared as every module's options are (vlo/core/option_table.h), and
+// a reader of one section whose errors name the plan file, the section and the key.
 #include <mrpt/config/CConfigFileMemory.h>
+#include <vlo/core/option_table.h>
 
 #include <string>
 #include <vector>
 
 namespace vlo::batch
 {
+/// [plan]
+struct PlanKeys : public OptionSet
+{
+	std::string data = "rawlogs/experiments", kitti_lengths, source;
+	int kitti_step = 0;
+
+   protected:
+	void declare(OptionTable& t) override;
+};
+
+/// [sequence NAME]
+struct SequenceKeys : public OptionSet
+{
+	std::string rawlog, gt, ini, sim, kitti_calib;
+	bool gt_translation_only = false;
+
+   protected:
+	void declare(OptionTable& t) override;
+};
+
+/// [config NAME]
+struct ConfigKeys : public OptionSet
+{
+	std::string set, align = "se3", ini;
+
+   protected:
+	void declare(OptionTable& t) override;
+};
+
 class SectionReader
 {
    public:
@@ -18,8 +48,8 @@ class SectionReader
 	/// "plan.ini: [sequence a] key", the prefix of every error about that key.
 	std::string where(const std::string& key) const { return origin_ + ": [" + section_ + "] " + key; }
 	bool has(const std::string& key) const { return ini_.keyExists(section_, key); }
-	std::string get(const std::string& key, const std::string& fallback = "") const;
-	bool getBool(const std::string& key, bool fallback) const;
+	/// Refuses a key that `keys` does not declare (suggesting the nearest), then loads them.
+	void load(OptionSet& keys) const;
 
    private:
 	const mrpt::config::CConfigFileMemory& ini_;

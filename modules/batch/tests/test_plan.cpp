@@ -142,7 +142,7 @@ TEST_F(BatchPlan, CollectingNeedsNoFiles)
 TEST_F(BatchPlan, BadPlansNameFileSectionAndKey)
 {
 	const std::string seq = "[sequence real]\nini = base.ini\n", cfg = "[config lo]\nset = pipeline.mode=lo\n";
-	expectError(seq + "rawlgo = x.rawlog\n" + cfg, {"[sequence real]", "unknown key 'rawlgo'"});
+	expectError(seq + "rawlgo = x.rawlog\n" + cfg, {"p.ini: [sequence real]: unknown key 'rawlgo' (did you mean rawlog?)"});
 	expectError(seq + cfg + "allign = sim3\n", {"[config lo]", "unknown key 'allign'"});
 	expectError("[plan]\njobs = 3\n" + seq + cfg, {"[plan]", "unknown key 'jobs'"});
 	expectError(seq + cfg + "[configs x]\n", {"[configs x]", "unknown section"});
@@ -160,13 +160,13 @@ TEST_F(BatchPlan, BadPlansNameFileSectionAndKey)
 	expectError("[sequence other]\nini = base.ini\n" + cfg,
 		{"[sequence other] rawlog", "other.rawlog does not exist (and no sim"});
 	expectError("[sequence real]\nini = base.ini\ngt = none.tum\n" + cfg, {"[sequence real] gt", "none.tum does not exist"});
-	expectError(seq + "gt_translation_only = maybe\n" + cfg, {"gt_translation_only", "true or false"});
+	expectError(seq + "gt_translation_only = maybe\n" + cfg, {"[sequence real] gt_translation_only: expects true or false, got 'maybe'"});
 	expectError(seq + "[config lo]\nset = pipeline.mode\n", {"[config lo] set", "'pipeline.mode' is not section.key=value"});
 	expectError(seq + "[config lo]\nset = \"pipeline.mode=lo\n", {"[config lo] set", "unterminated"});
 	expectError(seq + "[config lo]\nini = nope.ini\n", {"[config lo] ini", "nope.ini does not exist"});
-	expectError(seq + "[config lo]\nalign = sim\n", {"[config lo] align", "se3, sim3 or none"});
+	expectError(seq + "[config lo]\nalign = sim\n", {"p.ini: [config lo] align: 'sim' is not one of se3, sim3, none (did you mean sim3?)"});
 	expectError("[plan]\nkitti_lengths = 10,x\n" + seq + cfg, {"[plan] kitti_lengths", "'x'"});
-	expectError("[plan]\nkitti_step = 0\n" + seq + cfg, {"[plan] kitti_step", "positive integer"});
+	expectError("[plan]\nkitti_step = 0\n" + seq + cfg, {"[plan] kitti_step: must be in [1, 1000000]"});
 	expectError("[sequence a/b]\nini = base.ini\n" + cfg, {"[sequence a/b]", "letters, digits"});
 	expectError("[sequence n]\nini = base.ini\nsim = --frames 3 --out x.rawlog\n" + cfg,
 		{"[sequence n] sim", "'--out' is not allowed"});

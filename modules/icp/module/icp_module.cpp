@@ -12,7 +12,7 @@ class IcpModule : public LidarOdometryModule
 	void configure(RunConfig& config) override
 	{
 		config.load(opt_, "icp");
-		odometry_ = std::make_unique<icp::IcpOdometry>(opt_);  // validates the options
+		odometry_ = std::make_unique<icp::IcpOdometry>(opt_);
 	}
 
 	Eigen::Isometry3d process(

@@ -32,10 +32,21 @@ TEST(IcpOptions, ABadValueNamesItsKey)
 		}
 		return std::string("no error");
 	};
-	EXPECT_EQ(message([](IcpOptions& o) { o.voxel_size = 0; }), "[icp] voxel_size: must be > 0");
-	EXPECT_EQ(message([](IcpOptions& o) { o.max_range = 0.5; }), "[icp] max_range: must exceed min_range");
-	EXPECT_EQ(message([](IcpOptions& o) { o.max_points_per_voxel = 0; }), "[icp] max_points_per_voxel: must be >= 1");
-	EXPECT_EQ(message([](IcpOptions& o) { o.max_guess_rotation_deg = 200; }),
-		"[icp] max_guess_rotation_deg: must be in (0, 180]");
+	// Options set in code have no section: the key alone.
+	EXPECT_EQ(message([](IcpOptions& o) { o.voxel_size = 0; }), "voxel_size: must be > 0");
+	EXPECT_EQ(message([](IcpOptions& o) { o.max_range = 0.5; }), "max_range: must exceed min_range");
+	EXPECT_EQ(message([](IcpOptions& o) { o.max_points_per_voxel = 0; }), "max_points_per_voxel: must be >= 1");
+	EXPECT_EQ(message([](IcpOptions& o) { o.max_guess_rotation_deg = 200; }), "max_guess_rotation_deg: must be in (0, 180]");
+	// Read from a section: the section too, whatever it is called.
+	IcpOptions o;
+	try
+	{
+		o.loadFromConfigFile(mrpt::config::CConfigFileMemory("[icp2]\nmax_range = 0.5\n"), "icp2");
+		ADD_FAILURE() << "no error";
+	}
+	catch (const InputError& e)
+	{
+		EXPECT_EQ(std::string(e.what()), "[icp2] max_range: must exceed min_range");
+	}
 }
 }  // namespace vlo::icp::test

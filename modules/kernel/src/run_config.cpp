@@ -1,7 +1,7 @@
 #include <vlo/core/error.h>
+#include <vlo/core/option_table.h>
 #include <vlo/kernel/run_config.h>
 
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -9,61 +9,8 @@ namespace vlo
 {
 namespace
 {
-std::string trim(const std::string& s)
-{
-	const auto b = s.find_first_not_of(" \t\r\n");
-	if (b == std::string::npos) return "";
-	return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
-
-bool parsesAs(const std::string& v, bool integer)
-{
-	if (v.empty()) return false;
-	char* end = nullptr;
-	if (integer)
-		(void)std::strtol(v.c_str(), &end, 10);
-	else
-		(void)std::strtod(v.c_str(), &end);
-	return *end == '\0';
-}
-
-bool isBoolText(const std::string& v)
-{
-	for (const char* b : {"true", "false", "1", "0", "yes", "no", "TRUE", "FALSE", "True", "False"})
-		if (v == b) return true;
-	return false;
-}
-
-/// MRPT silently reads "abc" as 0: reject a user value whose form differs from the default's.
-void checkValueType(const std::string& origin, const std::string& section, const std::string& key,
-	const std::string& defaultText, const std::string& userText)
-{
-	const std::string d = trim(defaultText), u = trim(userText);
-	const std::string where = origin + ": [" + section + "] " + key;
-	if (d == "true" || d == "false")
-	{
-		if (!isBoolText(u)) failInput(where, "expects true or false, got '" + u + "'");
-	}
-	else if (parsesAs(d, true))
-	{
-		if (!parsesAs(u, true)) failInput(where, "expects an integer, got '" + u + "'");
-	}
-	else if (parsesAs(d, false))
-	{
-		if (!parsesAs(u, false)) failInput(where, "expects a number, got '" + u + "'");
-	}
-}
 /// A file the user gives as an INI must look like one: text, every line a comment, a [section], a
 /// key = value inside a section, or an MRPT @directive; and at least one section.
-/// Up to 60 characters of a line for a message, unprintable ones shown as '?'.
-std::string quoted(const std::string& line)
-{
-	std::string q = line.substr(0, 60);
-	for (char& c : q)
-		if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
-	return "'" + q + "'";
-}
-
 void checkIniSyntax(const std::string& text, const std::string& path)
 {
 	if (text.find('\0') != std::string::npos) failInput(path, "not an INI file (binary content)");
@@ -72,22 +19,22 @@ void checkIniSyntax(const std::string& text, const std::string& path)
 	bool section = false;
 	for (int n = 1; std::getline(in, line); ++n)
 	{
-		const std::string t = trim(line);
+		const std::string t = trimmed(line);
 		const std::string where = path + ": line " + std::to_string(n);
 		if (t.empty() || t[0] == '#' || t[0] == ';' || t.rfind("//", 0) == 0 || t[0] == '@') continue;
 		if (t[0] == '[')
 		{
 			const auto close = t.find(']');
-			const std::string rest = close == std::string::npos ? "" : trim(t.substr(close + 1));
+			const std::string rest = close == std::string::npos ? "" : trimmed(t.substr(close + 1));
 			if (close == std::string::npos || close < 2 || !(rest.empty() || rest[0] == '#' || rest[0] == ';'))
-				failInput(where, "malformed section header " + quoted(t));
+				failInput(where, "malformed section header '" + printable(t) + "'");
 			section = true;
 			continue;
 		}
 		const auto eq = t.find('=');
-		if (eq == std::string::npos || trim(t.substr(0, eq)).empty())
-			failInput(where, quoted(t) + " is not 'key = value', a [section] or a comment: is this an INI file?");
-		if (!section) failInput(where, quoted(t) + " comes before any [section]");
+		if (eq == std::string::npos || trimmed(t.substr(0, eq)).empty())
+			failInput(where, "'" + printable(t) + "' is not 'key = value', a [section] or a comment: is this an INI file?");
+		if (!section) failInput(where, "'" + printable(t) + "' comes before any [section]");
 	}
 	if (!section) failInput(path, "no [section] in the file: is this an INI file? (see ini/ for examples)");
 }
@@ -128,7 +75,9 @@ RunConfig RunConfig::fromString(const std::string& ini, const std::string& origi
 			failInput("--set " + o, "expected section.key=value");
 		// Sections may contain dots ("loam.odometry"): the key is after the last dot before '='.
 		const auto lastDot = o.rfind('.', eq);
-		cfg.user_.write(o.substr(0, lastDot), o.substr(lastDot + 1, eq - lastDot - 1), o.substr(eq + 1));
+		const std::string section = o.substr(0, lastDot), key = trimmed(o.substr(lastDot + 1, eq - lastDot - 1));
+		cfg.user_.write(section, key, o.substr(eq + 1));
+		cfg.overrides_[{section, key}] = o;
 	}
 	return cfg;
 }
@@ -138,38 +87,55 @@ void RunConfig::setDefault(const std::string& section, const std::string& key, c
 	if (!user_.keyExists(section, key)) user_.write(section, key, value);
 }
 
-void RunConfig::load(mrpt::config::CLoadableOptions& opts, const std::string& section)
+std::string RunConfig::where(const std::string& section, const std::string& key) const
 {
-	opts.loadFromConfigFile(user_, section);
-	mrpt::config::CConfigFileMemory saved;
-	opts.saveToConfigFile(saved, section);
-	std::vector<std::string> keys;
-	saved.getAllKeys(section, keys);
-	known_sections_.insert(section);
-	for (const auto& padded : keys)
+	const auto set = overrides_.find({section, key});
+	if (set != overrides_.end()) return "--set " + set->second;
+	return origin_ + ": [" + printable(section) + "] " + printable(key);
+}
+
+void RunConfig::load(OptionSet& opts, const std::string& section)
+{
+	try
 	{
-		// MRPT_SAVE_CONFIG_VAR_COMMENT pads names for alignment: compare trimmed names.
-		const std::string k = trim(padded);
-		known_.insert({section, k});
-		const std::string value = trim(saved.read_string(section, padded, ""));
-		if (user_.keyExists(section, k))
-			checkValueType(origin_, section, k, value, user_.read_string(section, k, ""));
+		opts.loadFromConfigFile(user_, section);
 	}
-	opts.saveToConfigFile(effective_, section);  // with MRPT's comments on each key
+	catch (const OptionError& e)
+	{
+		failInput(where(section, e.key()), e.problem());
+	}
+	known_sections_.insert(section);
+	declared_[section] = opts.rows();
+	for (const auto& row : declared_[section]) known_.insert({section, row.key});
+	opts.saveToConfigFile(effective_, section);  // with the help text as a comment on each key
 }
 
 void RunConfig::checkAllKeysUsed() const
 {
 	std::vector<std::string> sections;
 	user_.getAllSections(sections);
+	const std::vector<std::string> knownSections(known_sections_.begin(), known_sections_.end());
 	for (const auto& s : sections)
 	{
 		if (s.empty()) continue;  // @define lines live outside any section
-		if (!known_sections_.count(s)) failInput(origin_, "unknown section [" + s + "]");
 		std::vector<std::string> keys;
 		user_.getAllKeys(s, keys);
-		for (const auto& k : keys)
-			if (!known_.count({s, trim(k)})) failInput(origin_, "unknown key '" + k + "' in section [" + s + "]");
+		if (!known_sections_.count(s))
+		{
+			// A section that only --set names is blamed on that --set.
+			const std::string at = !keys.empty() && overrides_.count({s, trimmed(keys[0])}) ? where(s, trimmed(keys[0])) : origin_;
+			failInput(at, "unknown section [" + printable(s) + "]" + didYouMean(s, knownSections));
+		}
+		std::vector<std::string> knownKeys;
+		for (const auto& [section, key] : known_)
+			if (section == s) knownKeys.push_back(key);
+		for (const auto& padded : keys)
+		{
+			const std::string k = trimmed(padded);
+			if (known_.count({s, k})) continue;
+			const std::string at = overrides_.count({s, k}) ? where(s, k) : origin_;
+			failInput(at, "unknown key '" + printable(k) + "' in section [" + printable(s) + "]" + didYouMean(k, knownKeys));
+		}
 	}
 }
 }  // namespace vlo

@@ -1,5 +1,4 @@
 #include <gtest/gtest.h>
-#include <mrpt/config/CConfigFileBase.h>
 #include <vlo/core/error.h>
 #include <vlo/kernel/run_config.h>
 
@@ -9,27 +8,22 @@ using namespace vlo;
 
 namespace
 {
-struct DemoOptions : public mrpt::config::CLoadableOptions
+struct DemoOptions : public OptionSet
 {
 	int count = 5;
 	double gain = 0.5;
 	bool enabled = true;
 	std::string mode = "fast";
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override
+   protected:
+	void declare(OptionTable& t) override
 	{
-		MRPT_LOAD_CONFIG_VAR(count, int, c, s);
-		MRPT_LOAD_CONFIG_VAR(gain, double, c, s);
-		MRPT_LOAD_CONFIG_VAR(enabled, bool, c, s);
-		MRPT_LOAD_CONFIG_VAR(mode, string, c, s);
+		t.add("count", count, ">= 1", "how many");
+		t.add("gain", gain, "any", "");
+		t.add("enabled", enabled, "true | false", "");
+		t.add("mode", mode, "fast | slow", "");
 	}
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override
-	{
-		MRPT_SAVE_CONFIG_VAR_COMMENT(count, "how many");
-		MRPT_SAVE_CONFIG_VAR_COMMENT(gain, "");
-		MRPT_SAVE_CONFIG_VAR_COMMENT(enabled, "");
-		MRPT_SAVE_CONFIG_VAR_COMMENT(mode, "");
-	}
+	void checkRelations() const override { require(gain < count, "gain", "must be below count"); }
 };
 
 std::string errorOf(const std::function<void()>& f)
@@ -68,28 +62,40 @@ TEST(RunConfig, DottedSectionOverride)
 	EXPECT_EQ(o.count, 3);
 }
 
-TEST(RunConfig, RejectsUnknownSectionKeyAndBadValues)
+/// The message of loading `ini` with `sets` into [demo] and checking every key.
+std::string loadError(const std::string& ini, const std::vector<std::string>& sets = {})
 {
-	{
-		auto cfg = RunConfig::fromString("[demo]\ncountt = 7\n", "a.ini");
+	return errorOf([&] {
+		auto cfg = RunConfig::fromString(ini, "a.ini", sets);
 		DemoOptions o;
 		cfg.load(o, "demo");
-		EXPECT_NE(errorOf([&] { cfg.checkAllKeysUsed(); }).find("unknown key 'countt' in section [demo]"), std::string::npos);
-	}
-	{
-		auto cfg = RunConfig::fromString("[demoo]\ncount = 7\n", "a.ini");
-		DemoOptions o;
-		cfg.load(o, "demo");
-		EXPECT_NE(errorOf([&] { cfg.checkAllKeysUsed(); }).find("unknown section [demoo]"), std::string::npos);
-	}
-	for (const char* bad : {"count = 2.5x", "gain = abc", "enabled = maybe"})
-	{
-		auto cfg = RunConfig::fromString(std::string("[demo]\n") + bad + "\n", "a.ini");
-		DemoOptions o;
-		const std::string err = errorOf([&] { cfg.load(o, "demo"); });
-		EXPECT_NE(err.find("a.ini: [demo]"), std::string::npos) << bad;
-	}
+		cfg.checkAllKeysUsed();
+	});
+}
+
+TEST(RunConfig, EveryOptionErrorNamesItsOriginSectionAndKey)
+{
+	// Values from the file name the file, the section and the key.
+	EXPECT_EQ(loadError("[demo]\ngain = abc\n"), "a.ini: [demo] gain: expects a number, got 'abc'");
+	EXPECT_EQ(loadError("[demo]\ncount = 2.5x\n"), "a.ini: [demo] count: expects an integer, got '2.5x'");
+	EXPECT_EQ(loadError("[demo]\nenabled = maybe\n"), "a.ini: [demo] enabled: expects true or false, got 'maybe'");
+	EXPECT_EQ(loadError("[demo]\ncount = 0\n"), "a.ini: [demo] count: must be >= 1");
+	EXPECT_EQ(loadError("[demo]\ngain = 9\n"), "a.ini: [demo] gain: must be below count");
+	EXPECT_EQ(loadError("[demo]\nmode = fsat\n"), "a.ini: [demo] mode: 'fsat' is not one of fast, slow (did you mean fast?)");
+	EXPECT_EQ(loadError("[demo]\ncountt = 7\n"), "a.ini: unknown key 'countt' in section [demo] (did you mean count?)");
+	EXPECT_EQ(loadError("[demoo]\ncount = 7\n"), "a.ini: unknown section [demoo] (did you mean demo?)");
+	EXPECT_EQ(loadError("[demo]\nsomething_else = 7\n"), "a.ini: unknown key 'something_else' in section [demo]");
+	// Values from --set name the --set, also when the file has the same key.
+	EXPECT_EQ(loadError("[demo]\ncount = 7\n", {"demo.count=0"}), "--set demo.count=0: must be >= 1");
+	EXPECT_EQ(loadError("", {"demo.gain=abc"}), "--set demo.gain=abc: expects a number, got 'abc'");
+	EXPECT_EQ(loadError("", {"demo.countt=7"}), "--set demo.countt=7: unknown key 'countt' in section [demo] (did you mean count?)");
+	EXPECT_EQ(loadError("", {"demoo.count=7"}), "--set demoo.count=7: unknown section [demoo] (did you mean demo?)");
 	EXPECT_FALSE(errorOf([] { RunConfig::fromString("", "a.ini", {"nodot=1"}); }).empty());
+	// A relation broken by a --set value is blamed on the key it names.
+	EXPECT_EQ(loadError("[demo]\ncount = 2\n", {"demo.gain=3"}), "--set demo.gain=3: must be below count");
+	EXPECT_EQ(loadError("[demo]\ngain = 3\n", {"demo.count=2"}), "a.ini: [demo] gain: must be below count");
+	// A control byte in a key is shown as '?', so that the message stays one printable line.
+	EXPECT_EQ(loadError("[demo]\nco\x01unt = 1\n"), "a.ini: unknown key 'co?unt' in section [demo] (did you mean count?)");
 }
 
 TEST(RunConfig, FilesThatAreNotIniAreRefusedNamingTheFile)

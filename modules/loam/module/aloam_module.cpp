@@ -11,15 +11,11 @@ class AloamModule : public LidarOdometryModule
    public:
 	void configure(RunConfig& config) override
 	{
-		config.load(opt_.scan, "loam.scan");
-		config.load(opt_.features, "loam.features");
-		config.load(opt_.odometry, "loam.odometry");
-		config.load(opt_.mapping, "loam.mapping");
 		// In a run the caller decides whether LOAM gets a guess ([pipeline] bootstrapping); with none,
 		// the external prior is constant velocity, as in A-LOAM. constant_velocity ignores any guess.
 		opt_.prior.source = "external";
-		config.load(opt_.prior, "loam.prior");
-		lo_ = std::make_unique<loam::LidarOdometry>(opt_);  // validates the options
+		for (const auto& [section, options] : opt_.parts()) config.load(*options, section);
+		lo_ = std::make_unique<loam::LidarOdometry>(opt_);
 	}
 
 	Eigen::Isometry3d process(

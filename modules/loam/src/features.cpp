@@ -34,7 +34,7 @@ void RingVoxelMerger::flush()
 	count_ = 0;
 }
 
-FeatureExtractor::FeatureExtractor(const FeatureOptions& o) : opt_(o) { opt_.validate(); }
+FeatureExtractor::FeatureExtractor(const FeatureOptions& o) : opt_(o) {}
 
 FeatureSet FeatureExtractor::extract(const RingScan& scan)
 {

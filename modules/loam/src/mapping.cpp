@@ -14,7 +14,6 @@ ScanToMap::ScanToMap(const MappingOptions& o)
 	  edge_map_(o.voxel_size, o.map_edge_resolution, o.max_points_per_voxel),
 	  plane_map_(o.voxel_size, o.map_plane_resolution, o.max_points_per_voxel)
 {
-	opt_.validate();
 }
 
 ScanToMap::Input ScanToMap::prepare(const FeatureSet& f) const

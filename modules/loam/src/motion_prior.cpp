@@ -83,7 +83,6 @@ Eigen::Isometry3d ExternalPrior::predict(double t, const std::optional<Eigen::Is
 
 std::unique_ptr<MotionPrior> makeMotionPrior(const PriorOptions& o)
 {
-	o.validate();
 	if (o.source == "external") return std::make_unique<ExternalPrior>(o);
 	return std::make_unique<ConstantVelocityPrior>();
 }

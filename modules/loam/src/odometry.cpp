@@ -7,7 +7,6 @@ namespace vlo::loam
 ScanToScanOdometry::ScanToScanOdometry(const OdometryOptions& o, const RingModel& rings)
 	: opt_(o), model_(rings), max2_(static_cast<float>(o.max_match_distance * o.max_match_distance))
 {
-	opt_.validate();
 }
 
 void ScanToScanOdometry::setReference(const FeatureSet& f)

@@ -1,76 +1,144 @@
-// [loam.prior] and the aggregate of all sections.
-#include "option_checks.h"
+// [loam.scan], [loam.features], [loam.odometry], [loam.mapping] (with their shared solver keys),
+// [loam.prior]: every key with its type, range and help.
 #include "vlo/loam/options.h"
-
-#include <cmath>
-#include <sstream>
 
 namespace vlo::loam
 {
-using detail::require;
-
-void PriorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+namespace
 {
-	source = c.read_string_first_word(s, "source", source);
-	external_stage = c.read_string_first_word(s, "external_stage", external_stage);
-	VLO_NUM(max_translation, double);
-	VLO_NUM(max_rotation_deg, double);
-	VLO_NUM(max_deviation, double);
-	VLO_NUM(max_deviation_deg, double);
+// The solver keys are the same in the odometry and mapping sections.
+void declareSolver(OptionTable& t, SolverOptions& o)
+{
+	t.add("outer_iterations", o.outer_iterations, ">= 1", "correspondence search + solve rounds");
+	t.add("max_solver_iterations", o.max_solver_iterations, ">= 1", "Ceres iterations per round");
+	t.add("loss", o.loss, "huber | cauchy | none", "robust loss: huber | cauchy | none");
+	t.add("loss_scale", o.loss_scale, "> 0", "residual [m] where the robust loss bends");
+	t.add("matches_per_block", o.matches_per_block, "[1, 4096]", "matches per Ceres residual block (1: Ceres applies the loss; >1: same cost, less overhead)");
+	t.add("converged_translation", o.converged_translation, ">= 0", "a round moving less ends the rounds [m]");
+	t.add("converged_rotation_deg", o.converged_rotation_deg, ">= 0", "... and turning less [deg]");
+}
+}  // namespace
+
+void ScanOptions::declare(OptionTable& t)
+{
+	t.add("ring_model", ring_model, "uniform | hdl64 | table", "uniform | hdl64 (two-block HDL-64E) | table");
+	t.add("n_rings", n_rings, "any", "beams of the uniform model, in [2, 256]");
+	t.add("vfov_min_deg", vfov_min_deg, "any", "lowest beam elevation (uniform) [deg]");
+	t.add("vfov_max_deg", vfov_max_deg, "any", "highest beam elevation (uniform) [deg]");
+	t.add("elevation_table_deg", elevation_table_deg, "(-90, 90)", "beam elevations (table model) [deg]");
+	t.add("fov_margin_deg", fov_margin_deg, ">= 0", "accepted beyond the extreme beams [deg]");
+	t.add("min_range", min_range, ">= 0", "closer returns are dropped [m]");
+	t.add("max_range", max_range, "any", "farther returns are dropped [m]");
+	t.add("scan_period", scan_period, "> 0", "seconds per sweep");
+	t.add("clockwise", clockwise, "true | false", "sensor spins clockwise seen from above (Velodyne)");
+	t.add("time_from_first_point", time_from_first_point, "true | false", "sweep starts at the first point's azimuth");
+	t.add("sweep_start_azimuth_deg", sweep_start_azimuth_deg, "any", "sweep start when not from the first point [deg]");
+	t.add("deskew", deskew, "true | false", "undistort features with the initial-guess motion");
+	t.add("deskew_reference", deskew_reference, "[0, 1]", "sweep fraction [0,1] the scan pose refers to");
+	t.add("max_deskew_passes", max_deskew_passes, "[1, 10]", "deskew + register again while the motion found changes");
+	t.add("deskew_tolerance", deskew_tolerance, ">= 0", "... by more than this [m]");
+	t.add("deskew_tolerance_deg", deskew_tolerance_deg, ">= 0", "... or this [deg]");
 }
 
-void PriorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
+void ScanOptions::checkRelations() const
 {
-	MRPT_SAVE_CONFIG_VAR_COMMENT(source, "constant_velocity (A-LOAM) | external (e.g. visual odometry)");
-	MRPT_SAVE_CONFIG_VAR_COMMENT(max_translation, "external motion longer than this is rejected [m]");
-	MRPT_SAVE_CONFIG_VAR_COMMENT(max_rotation_deg, "external motion turning more is rejected [deg]");
-	MRPT_SAVE_CONFIG_VAR_COMMENT(max_deviation, "external motion this far from constant velocity and from its own last motion is rejected [m]");
-	MRPT_SAVE_CONFIG_VAR_COMMENT(max_deviation_deg, "... or turning this differently [deg]");
-	MRPT_SAVE_CONFIG_VAR_COMMENT(external_stage, "odometry: the external motion initialises scan-to-scan | mapping: scan-to-map, scan-to-scan skipped");
+	if (ring_model == "uniform")
+	{
+		require(n_rings >= 2 && n_rings <= 256, "n_rings", "must be in [2, 256]");
+		require(vfov_max_deg > vfov_min_deg, "vfov_max_deg", "must exceed vfov_min_deg");
+		require(vfov_min_deg > -90 && vfov_max_deg < 90, "vfov_min_deg", "elevations must be within (-90, 90)");
+	}
+	if (ring_model == "table") require(elevation_table_deg.size() >= 2, "elevation_table_deg", "needs at least 2 beams");
+	require(max_range > min_range, "max_range", "must exceed min_range");
 }
 
-void PriorOptions::validate() const
+void FeatureOptions::declare(OptionTable& t)
 {
-	const std::string s = "loam.prior";
-	require(source == "constant_velocity" || source == "external", s, "source",
-		"'" + source + "' is not one of constant_velocity, external");
-	require(external_stage == "odometry" || external_stage == "mapping", s, "external_stage",
-		"'" + external_stage + "' is not one of odometry, mapping");
-	require(max_translation > 0, s, "max_translation", "must be > 0");
-	require(max_rotation_deg > 0, s, "max_rotation_deg", "must be > 0");
-	require(max_deviation > 0, s, "max_deviation", "must be > 0");
-	require(max_deviation_deg > 0, s, "max_deviation_deg", "must be > 0");
+	t.add("curvature_half_window", curvature_half_window, "[1, 50]", "neighbours per side for the curvature");
+	t.add("n_sectors", n_sectors, ">= 1", "sectors per ring");
+	t.add("max_sharp", max_sharp, ">= 0", "sharp (edge) points per sector");
+	t.add("max_less_sharp", max_less_sharp, ">= 0", "less-sharp points per sector (sharp included)");
+	t.add("max_flat", max_flat, ">= 0", "flat (plane) points per sector");
+	t.add("sharp_threshold", sharp_threshold, ">= 0", "curvature above: edge candidate [m^2]");
+	t.add("flat_threshold", flat_threshold, ">= 0", "curvature below: plane candidate [m^2]");
+	t.add("suppress_gap_sq", suppress_gap_sq, ">= 0", "neighbour suppression stops at this gap [m^2]");
+	t.add("sharp_local_max", sharp_local_max, "true | false", "edges only at curvature peaks (sparse rings smear edges otherwise)");
+	t.add("less_flat_leaf", less_flat_leaf, "> 0", "voxel size of the less-flat downsampling [m]");
+	t.add("less_flat_threshold", less_flat_threshold, "> 0", "less-flat (plane) points: curvature below [m^2] (A-LOAM: no limit)");
+	t.add("reject_occluded", reject_occluded, "true | false", "drop points next to occlusion boundaries");
+	t.add("occlusion_gap_sq", occlusion_gap_sq, ">= 0", "gap between neighbours that may be an occlusion [m^2]");
+	t.add("occlusion_angle", occlusion_angle, ">= 0", "... when their beams are closer than this [rad]");
+	t.add("reject_parallel", reject_parallel, "true | false", "drop points on surfaces nearly parallel to the beam");
+	t.add("parallel_ratio", parallel_ratio, ">= 0", "both gaps^2 > ratio * range^2: parallel");
+	t.add("min_rings", min_rings, ">= 1", "fewer populated rings: frame skipped");
+	t.add("min_sharp", min_sharp, ">= 0", "fewer sharp points: frame skipped");
+	t.add("min_flat", min_flat, ">= 0", "fewer flat points: frame skipped");
 }
 
-std::vector<std::string> LoamOptions::sections()
+void FeatureOptions::checkRelations() const
 {
-	return {"loam.scan", "loam.features", "loam.odometry", "loam.mapping", "loam.prior"};
+	require(max_less_sharp >= max_sharp, "max_less_sharp", "must be >= max_sharp");
 }
 
-void LoamOptions::load(const mrpt::config::CConfigFileBase& c)
+void OdometryOptions::declare(OptionTable& t)
 {
-	scan.loadFromConfigFile(c, "loam.scan");
-	features.loadFromConfigFile(c, "loam.features");
-	odometry.loadFromConfigFile(c, "loam.odometry");
-	mapping.loadFromConfigFile(c, "loam.mapping");
-	prior.loadFromConfigFile(c, "loam.prior");
+	t.add("enabled", enabled, "true | false", "scan-to-scan registration (else the prior feeds the mapping)");
+	declareSolver(t, solver);
+	t.add("max_match_distance", max_match_distance, "> 0", "nearest-neighbour gate [m]");
+	t.add("nearby_rings", nearby_rings, ">= 1", "rings searched on each side for line/plane points");
+	t.add("use_kdtree", use_kdtree, "true | false", "first neighbour from a kd-tree (A-LOAM) instead of the rings near the query");
+	t.add("min_correspondences", min_correspondences, ">= 6", "fewer: keep the initial guess");
+	t.add("max_rounds", max_rounds, ">= 1", "rounds continue past outer_iterations while the pose still moves, up to this many");
 }
 
-void LoamOptions::save(mrpt::config::CConfigFileBase& c) const
+void OdometryOptions::checkRelations() const
 {
-	scan.saveToConfigFile(c, "loam.scan");
-	features.saveToConfigFile(c, "loam.features");
-	odometry.saveToConfigFile(c, "loam.odometry");
-	mapping.saveToConfigFile(c, "loam.mapping");
-	prior.saveToConfigFile(c, "loam.prior");
+	require(max_rounds >= solver.outer_iterations, "max_rounds", "must be >= outer_iterations");
 }
 
-void LoamOptions::validate() const
+void MappingOptions::declare(OptionTable& t)
 {
-	scan.validate();
-	features.validate();
-	odometry.validate();
-	mapping.validate();
-	prior.validate();
+	t.add("enabled", enabled, "true | false", "scan-to-map refinement every frame");
+	declareSolver(t, solver);
+	t.add("edge_leaf", edge_leaf, "> 0", "downsampling of the scan's edge points [m]");
+	t.add("plane_leaf", plane_leaf, "> 0", "downsampling of the scan's plane points [m]");
+	t.add("map_edge_resolution", map_edge_resolution, "> 0", "edge map: one point per cell [m]");
+	t.add("map_plane_resolution", map_plane_resolution, "> 0", "plane map: one point per cell [m]");
+	t.add("voxel_size", voxel_size, "> 0", "hash voxel edge, >= 2*max_nn_distance [m]");
+	t.add("max_points_per_voxel", max_points_per_voxel, ">= 1", "cap on map points per voxel");
+	t.add("map_radius", map_radius, "> 0", "voxels farther from the vehicle are dropped [m]");
+	t.add("knn", knn, "[3, 32]", "neighbours for the line/plane fits");
+	t.add("max_nn_distance", max_nn_distance, "> 0", "all neighbours must be this close [m]");
+	t.add("edge_eigen_ratio", edge_eigen_ratio, ">= 1", "line if largest eigenvalue > ratio * middle");
+	t.add("plane_max_distance", plane_max_distance, "> 0", "plane if all neighbours are this close to it [m]");
+	t.add("plane_line_ratio", plane_line_ratio, ">= 1", "no plane if largest eigenvalue > ratio * middle (one ring)");
+	t.add("min_edge_correspondences", min_edge_correspondences, ">= 0", "fewer edge matches: keep the odometry pose (0: edges optional)");
+	t.add("min_plane_correspondences", min_plane_correspondences, ">= 0", "fewer plane matches: keep the odometry pose");
+	t.add("degeneracy_threshold", degeneracy_threshold, ">= 0", "min eigenvalue of J^T J below: degenerate");
+}
+
+void MappingOptions::checkRelations() const
+{
+	require(voxel_size >= 2 * max_nn_distance, "voxel_size", "must be >= 2 * max_nn_distance");
+	require(voxel_size / map_edge_resolution <= 64 && voxel_size / map_plane_resolution <= 64, "voxel_size",
+		"must be at most 64 map resolution cells");
+	require(max_points_per_voxel >= knn, "max_points_per_voxel", "must be >= knn");
+	require(map_radius > voxel_size, "map_radius", "must exceed voxel_size");
+}
+
+void PriorOptions::declare(OptionTable& t)
+{
+	t.add("source", source, "constant_velocity | external", "constant_velocity (A-LOAM) | external (e.g. visual odometry)");
+	t.add("max_translation", max_translation, "> 0", "external motion longer than this is rejected [m]");
+	t.add("max_rotation_deg", max_rotation_deg, "> 0", "external motion turning more is rejected [deg]");
+	t.add("max_deviation", max_deviation, "> 0", "external motion this far from constant velocity and from its own last motion is rejected [m]");
+	t.add("max_deviation_deg", max_deviation_deg, "> 0", "... or turning this differently [deg]");
+	t.add("external_stage", external_stage, "odometry | mapping", "odometry: the external motion initialises scan-to-scan | mapping: scan-to-map, scan-to-scan skipped");
+}
+
+std::vector<std::pair<std::string, OptionSet*>> LoamOptions::parts()
+{
+	return {{"loam.scan", &scan}, {"loam.features", &features}, {"loam.odometry", &odometry}, {"loam.mapping", &mapping},
+		{"loam.prior", &prior}};
 }
 }  // namespace vlo::loam

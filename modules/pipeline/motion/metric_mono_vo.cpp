@@ -19,14 +19,14 @@ class MetricMonoVo : public MotionSource
    public:
 	void configure(RunConfig& config, const MotionSourceSetup& setup) override
 	{
-		const std::string where = config.origin() + ": [pipeline] visual_odometry";
+		const std::string where = config.where("pipeline", "visual_odometry");
 		auto vo = registry<VisualOdometryModule>().create(setup.visual_odometry, where);
 		vo_.reset(dynamic_cast<MonocularVisualOdometry*>(vo.get()));
 		if (!vo_) failInput(where, "'" + setup.visual_odometry + "' is not a monocular VO, which motion_source = metric_mono needs (a metric VO: motion_source = visual)");
 		vo.release();
 		vo_->configure(config);
 		scale_ = registry<ScaleCorrectionModule>().create(
-			setup.scale_correction, config.origin() + ": [pipeline] scale_correction");
+			setup.scale_correction, config.where("pipeline", "scale_correction"));
 		scale_->configure(config, setup.snapshot_every);
 	}
 

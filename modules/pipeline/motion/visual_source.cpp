@@ -13,7 +13,7 @@ class VisualSource : public MotionSource
    public:
 	void configure(RunConfig& config, const MotionSourceSetup& setup) override
 	{
-		vo_ = registry<VisualOdometryModule>().create(setup.visual_odometry, config.origin() + ": [pipeline] visual_odometry");
+		vo_ = registry<VisualOdometryModule>().create(setup.visual_odometry, config.where("pipeline", "visual_odometry"));
 		vo_->configure(config);
 	}
 

@@ -61,23 +61,23 @@ void checkOptionsOfAll(RunConfig& config, const Args&... args)
 /// Creates and configures the modules the plan runs, and no other.
 Stages makeStages(const PipelineOptions& popt, const RunPlan& plan, RunConfig& config)
 {
-	const std::string where = config.origin() + ": [pipeline] ";
-	registry<MotionSource>().require(popt.motion_source, where + "motion_source");
-	registry<VisualOdometryModule>().require(popt.visual_odometry, where + "visual_odometry");
-	registry<ScaleCorrectionModule>().require(popt.scale_correction, where + "scale_correction");
-	registry<LidarOdometryModule>().require(popt.lidar_odometry, where + "lidar_odometry");
+	const auto where = [&config](const char* key) { return config.where("pipeline", key); };
+	registry<MotionSource>().require(popt.motion_source, where("motion_source"));
+	registry<VisualOdometryModule>().require(popt.visual_odometry, where("visual_odometry"));
+	registry<ScaleCorrectionModule>().require(popt.scale_correction, where("scale_correction"));
+	registry<LidarOdometryModule>().require(popt.lidar_odometry, where("lidar_odometry"));
 	checkOptionsOfAll<VisualOdometryModule>(config);
 	checkOptionsOfAll<ScaleCorrectionModule>(config, 0);
 	checkOptionsOfAll<LidarOdometryModule>(config);
 	Stages s;
 	if (!plan.motion_source.empty())
 	{
-		s.motion = registry<MotionSource>().create(plan.motion_source, where + "motion_source");
+		s.motion = registry<MotionSource>().create(plan.motion_source, where("motion_source"));
 		s.motion->configure(config, popt.motionSourceSetup());
 	}
 	if (plan.lidar_odometry)
 	{
-		s.lidar = registry<LidarOdometryModule>().create(popt.lidar_odometry, where + "lidar_odometry");
+		s.lidar = registry<LidarOdometryModule>().create(popt.lidar_odometry, where("lidar_odometry"));
 		s.lidar->configure(config);
 	}
 	config.checkAllKeysUsed();
@@ -90,7 +90,6 @@ RunSummary runPipeline(const RunRequest& req)
 	auto config = RunConfig::fromFile(req.ini, req.overrides);
 	PipelineOptions popt;
 	config.load(popt, "pipeline");
-	popt.validate(config.origin());
 	const RunPlan plan = popt.plan();
 	Stages stages = makeStages(popt, plan, config);
 	logger().logFmt(mrpt::system::LVL_DEBUG, "mode %s: motion source '%s', LiDAR odometry '%s'", plan.name.c_str(),

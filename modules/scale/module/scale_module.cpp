@@ -31,7 +31,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 	{
 		snapshot_every_ = snapshot_every;
 		config.load(opt_, "scale");
-		corrector_ = std::make_unique<scale::ScaleCorrector>(opt_);  // validates the options
+		corrector_ = std::make_unique<scale::ScaleCorrector>(opt_);
 		policy_ = std::make_unique<scale::ScaleCorrectionPolicy>(opt_);
 	}
 

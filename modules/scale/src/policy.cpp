@@ -22,7 +22,6 @@ ScaleCorrectionPolicy::ScaleCorrectionPolicy(const ScaleOptions& opt)
 	  enabled_(opt.correction_enabled),
 	  window_(static_cast<std::size_t>(std::max(1, opt.correction_window)))
 {
-	opt.validate();
 }
 
 ScaleDecision ScaleCorrectionPolicy::decide(const ScaleEstimate& e)

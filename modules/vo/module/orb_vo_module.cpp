@@ -14,11 +14,7 @@ class OrbVoModule : public MonocularVisualOdometry
    public:
 	void configure(RunConfig& config) override
 	{
-		config.load(opt_.orb, "vo.orb");
-		config.load(opt_.init, "vo.init");
-		config.load(opt_.tracking, "vo.tracking");
-		config.load(opt_.mapping, "vo.mapping");
-		opt_.validate();
+		for (const auto& [section, options] : opt_.parts()) config.load(*options, section);
 	}
 
 	VisualOdometryStep process(const Frame& frame, FrameTable& table) override

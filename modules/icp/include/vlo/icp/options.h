@@ -2,13 +2,11 @@
 // Options of the point-to-point ICP odometry (KISS-ICP's method), INI section [icp].
 // Every default is the value used when the key is absent; KISS-ICP's defaults serve any spinning
 // LiDAR, which is why the shipped sensor INIs need no [icp] section.
-#include <mrpt/config/CLoadableOptions.h>
-
-#include <string>
+#include <vlo/core/option_table.h>
 
 namespace vlo::icp
 {
-struct IcpOptions : public mrpt::config::CLoadableOptions
+struct IcpOptions : public OptionSet
 {
 	double min_range = 1.0;  ///< closer returns (vehicle body) are dropped [m]
 	double max_range = 100.0;  ///< farther returns are dropped; also the lever of the rotation error [m]
@@ -24,9 +22,8 @@ struct IcpOptions : public mrpt::config::CLoadableOptions
 	double max_guess_translation = 5.0;  ///< an external motion guess longer than this is ignored [m]
 	double max_guess_rotation_deg = 30.0;  ///< ... or turning more than this [deg]
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	/// Throws InputError naming "[section] key" and the problem.
-	void validate(const std::string& section = "icp") const;
+   protected:
+	void declare(OptionTable& t) override;
+	void checkRelations() const override;
 };
 }  // namespace vlo::icp

@@ -1,9 +1,13 @@
 #pragma once
 // The INI configuration of a run: the user's file plus "--set section.key=value" overrides.
-// Every module loads its CLoadableOptions through load(); afterwards checkAllKeysUsed() rejects any
-// section or key that no module knows, and effectiveIni() holds the values actually used.
+// Every module loads its options (an OptionSet) through load(); afterwards checkAllKeysUsed() rejects any
+// section or key that no module knows, and effectiveIni() holds the values actually used. Every error
+// names where the value came from: "--set loam.mapping.map_radius=abc: ..." for an override,
+// "run.ini: [loam.mapping] map_radius: ..." for the file.
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/config/CLoadableOptions.h>
+#include <vlo/core/option_table.h>
+
+#include <map>
 
 #include <set>
 #include <string>
@@ -24,20 +28,30 @@ class RunConfig
 	/// Gives `section.key` the value `value` unless the file or an override sets it: a default that
 	/// depends on another option (e.g. the LOAM prior source in mode vlo).
 	void setDefault(const std::string& section, const std::string& key, const std::string& value);
-	/// Loads `opts` from `section` (defaults where absent) and validates the types of given values.
-	void load(mrpt::config::CLoadableOptions& opts, const std::string& section);
-	/// Throws InputError naming the first section or key that no load() consumed.
+	/// Loads `opts` from `section` (defaults where absent): types, ranges and relations, in one place.
+	void load(OptionSet& opts, const std::string& section);
+	/// Throws InputError naming the first section or key that no load() consumed, and the nearest known
+	/// one when it looks like a typo.
 	void checkAllKeysUsed() const;
 	/// The effective values of every loaded section, as an INI text.
 	std::string effectiveIni() const { return effective_.getContent(); }
 
+	/// The keys every load() declared, by section: what doc/OPTIONS.md lists.
+	const std::map<std::string, std::vector<OptionRow>>& declared() const { return declared_; }
+
 	const mrpt::config::CConfigFileBase& ini() const { return user_; }
 	const std::string& origin() const { return origin_; }
+
+	/// "--set section.key=value" when an override gave the key, else "<file>: [section] key": the
+	/// prefix of an error about that key's value.
+	std::string where(const std::string& section, const std::string& key) const;
 
    private:
 	mrpt::config::CConfigFileMemory user_, effective_;
 	std::string origin_;
 	std::set<std::pair<std::string, std::string>> known_;
 	std::set<std::string> known_sections_;
+	std::map<std::pair<std::string, std::string>, std::string> overrides_;
+	std::map<std::string, std::vector<OptionRow>> declared_;  ///< (section, key) -> the --set text
 };
 }  // namespace vlo

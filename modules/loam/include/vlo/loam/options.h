@@ -3,7 +3,7 @@
 // INI sections: [loam.scan], [loam.features], [loam.odometry], [loam.mapping], [loam.prior].
 // Every default below is the value used when the key is absent; saveToConfigFile() writes them all
 // with a comment, so a saved file lists every known key.
-#include <mrpt/config/CLoadableOptions.h>
+#include <vlo/core/option_table.h>
 
 #include <string>
 #include <vector>
@@ -11,7 +11,7 @@
 namespace vlo::loam
 {
 /// Scan preprocessing: ring assignment, timing within the sweep, range gating, deskew.
-struct ScanOptions : public mrpt::config::CLoadableOptions
+struct ScanOptions : public OptionSet
 {
 	std::string ring_model = "uniform";  ///< uniform | hdl64 | table
 	int n_rings = 16;  ///< beams of the uniform model
@@ -30,13 +30,13 @@ struct ScanOptions : public mrpt::config::CLoadableOptions
 	double deskew_tolerance = 0.01;  ///< ... by more than this [m]
 	double deskew_tolerance_deg = 0.1;  ///< ... or this [deg]
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	void validate() const;  ///< throws InputError naming the key
+   protected:
+	void declare(OptionTable& t) override;
+	void checkRelations() const override;
 };
 
 /// Curvature-based feature selection (LOAM section IV-A).
-struct FeatureOptions : public mrpt::config::CLoadableOptions
+struct FeatureOptions : public OptionSet
 {
 	int curvature_half_window = 5;  ///< neighbours on each side on the same ring
 	int n_sectors = 6;  ///< per ring, for an even spread of features
@@ -55,9 +55,9 @@ struct FeatureOptions : public mrpt::config::CLoadableOptions
 	int min_rings = 4;  ///< fewer populated rings: the frame is skipped
 	int min_sharp = 10, min_flat = 30;  ///< fewer features: the frame is skipped
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	void validate() const;
+   protected:
+	void declare(OptionTable& t) override;
+	void checkRelations() const override;
 };
 
 /// Robust nonlinear least squares settings shared by both registrations.
@@ -73,7 +73,7 @@ struct SolverOptions
 };
 
 /// Scan-to-scan registration against the previous scan's features.
-struct OdometryOptions : public mrpt::config::CLoadableOptions
+struct OdometryOptions : public OptionSet
 {
 	bool enabled = true;
 	SolverOptions solver;
@@ -85,13 +85,13 @@ struct OdometryOptions : public mrpt::config::CLoadableOptions
 	/// from the motion: a cold start at speed, a gap), up to this many in all.
 	int max_rounds = 30;
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	void validate() const;
+   protected:
+	void declare(OptionTable& t) override;
+	void checkRelations() const override;
 };
 
 /// Scan-to-map registration and the bounded local map.
-struct MappingOptions : public mrpt::config::CLoadableOptions
+struct MappingOptions : public OptionSet
 {
 	bool enabled = true;
 	SolverOptions solver;
@@ -108,13 +108,13 @@ struct MappingOptions : public mrpt::config::CLoadableOptions
 	int min_edge_correspondences = 0, min_plane_correspondences = 50;  ///< fewer: keep the odometry pose (edges are optional: some scenes have none)
 	double degeneracy_threshold = 10.0;  ///< min eigenvalue of J^T J below: degenerate
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	void validate() const;
+   protected:
+	void declare(OptionTable& t) override;
+	void checkRelations() const override;
 };
 
 /// Source of the initial guess of each frame's motion.
-struct PriorOptions : public mrpt::config::CLoadableOptions
+struct PriorOptions : public OptionSet
 {
 	std::string source = "constant_velocity";  ///< constant_velocity | external
 	double max_translation = 5.0;  ///< an external motion longer than this is rejected [m]
@@ -129,13 +129,12 @@ struct PriorOptions : public mrpt::config::CLoadableOptions
 	/// "mapping" = it initialises scan-to-map directly and scan-to-scan is skipped for that frame.
 	std::string external_stage = "odometry";
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	void validate() const;
+   protected:
+	void declare(OptionTable& t) override;
 };
 
 /// All of the above, read from / written to their default sections.
-struct LoamOptions
+struct LoamOptions : public OptionGroup
 {
 	ScanOptions scan;
 	FeatureOptions features;
@@ -143,9 +142,7 @@ struct LoamOptions
 	MappingOptions mapping;
 	PriorOptions prior;
 
-	void load(const mrpt::config::CConfigFileBase& c);
-	void save(mrpt::config::CConfigFileBase& c) const;
-	void validate() const;
-	static std::vector<std::string> sections();
+	/// [loam.scan], [loam.features], [loam.odometry], [loam.mapping], [loam.prior]
+	std::vector<std::pair<std::string, OptionSet*>> parts() override;
 };
 }  // namespace vlo::loam

@@ -1,6 +1,6 @@
 #pragma once
 // The [pipeline] section: which modules run, how observations are paired, what is written.
-#include <mrpt/config/CLoadableOptions.h>
+#include <vlo/core/option_table.h>
 #include <vlo/kernel/motion_source.h>
 
 #include <string>
@@ -18,7 +18,7 @@ struct RunPlan
 	std::string lidar_label;  ///< name of the LiDAR odometry's trajectory in plots
 };
 
-struct PipelineOptions : public mrpt::config::CLoadableOptions
+struct PipelineOptions : public OptionSet
 {
 	std::string mode = "lo";  ///< lo (LiDAR only, the A-LOAM baseline) | vo | vlo
 	std::string lidar_odometry = "aloam";  ///< registry name of the LiDAR odometry module
@@ -40,13 +40,11 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	bool bootstrapping = true;
 	int scale_snapshot_every = 0;  ///< mode vlo: a scale-corrector snapshot every N frames (0 = none)
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	/// Throws InputError naming the key for an impossible value.
-	void validate(const std::string& origin) const;
-
 	RunPlan plan() const;
 	/// The module names a motion source composes.
 	MotionSourceSetup motionSourceSetup() const { return {visual_odometry, scale_correction, scale_snapshot_every}; }
+
+   protected:
+	void declare(OptionTable& t) override;
 };
 }  // namespace vlo

@@ -1,9 +1,7 @@
 #pragma once
 // Options of the scale corrector (paper sections III-B/C), INI section [scale]. Every default below is
 // the value used when the key is absent; saveToConfigFile() writes them all with a comment.
-#include <mrpt/config/CLoadableOptions.h>
-
-#include <string>
+#include <vlo/core/option_table.h>
 
 namespace vlo::scale
 {
@@ -15,10 +13,8 @@ enum class KeypointTest
 	None  ///< gradient test alone (ablation)
 };
 const char* toString(KeypointTest t);
-/// Throws InputError for an unknown name.
-KeypointTest parseKeypointTest(const std::string& name, const std::string& where);
 
-struct ScaleOptions : public mrpt::config::CLoadableOptions
+struct ScaleOptions : public OptionSet
 {
 	// Projection of scan L(i-1) into image C(i-1).
 	double min_depth = 1.0;  ///< [m] along the optical axis; nearer points are ignored
@@ -66,9 +62,8 @@ struct ScaleOptions : public mrpt::config::CLoadableOptions
 	/// them (or on a median of 5) disturbs it more than it corrects (doc/SCALE.md).
 	int correction_window = 15;
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	/// Throws InputError naming the key of an impossible value.
-	void validate(const std::string& section = "scale") const;
+   protected:
+	void declare(OptionTable& t) override;
+	void checkRelations() const override;
 };
 }  // namespace vlo::scale

@@ -2,14 +2,16 @@
 // Options of the monocular visual odometry, one CLoadableOptions struct per stage.
 // INI sections: [vo.orb], [vo.init], [vo.tracking], [vo.mapping]. Every default below is the value
 // used when the key is absent (most are ORB-SLAM2's); saveToConfigFile() writes them all, commented.
-#include <mrpt/config/CLoadableOptions.h>
+#include <vlo/core/option_table.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace vlo::vo
 {
 /// ORB features over a scale pyramid.
-struct OrbOptions : public mrpt::config::CLoadableOptions
+struct OrbOptions : public OptionSet
 {
 	/// FAST corners spread by adaptive non-maximal suppression or by ORB-SLAM's quadtree, with
 	/// OpenCV's rBRIEF; or opencv: cv::ORB as it is (the strongest corners, clustered on texture).
@@ -25,13 +27,13 @@ struct OrbOptions : public mrpt::config::CLoadableOptions
 	int fallback_cell = 30;  ///< cells [px] in which the lower FAST threshold may be used
 	double anms_pool = 10.0;  ///< anms: the strongest pool * wanted corners of a level compete
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	void validate() const;  ///< throws InputError naming the key
+   protected:
+	void declare(OptionTable& t) override;
+	void checkRelations() const override;
 };
 
 /// Map initialisation from two frames (homography / fundamental matrix model selection).
-struct InitOptions : public mrpt::config::CLoadableOptions
+struct InitOptions : public OptionSet
 {
 	int min_features = 100;  ///< fewer: the frame cannot be an initialisation frame
 	int min_matches = 100;  ///< fewer matches with the reference: the reference is replaced
@@ -54,13 +56,12 @@ struct InitOptions : public mrpt::config::CLoadableOptions
 	int min_tracked_after_ba = 100;  ///< map points left after the initial BA
 	int seed = 1;  ///< RANSAC random sets (deterministic runs)
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	void validate() const;
+   protected:
+	void declare(OptionTable& t) override;
 };
 
 /// Frame-to-frame and frame-to-local-map tracking, keyframe decision, re-initialisation.
-struct TrackingOptions : public mrpt::config::CLoadableOptions
+struct TrackingOptions : public OptionSet
 {
 	int descriptor_high = 100;  ///< Hamming distance accepted for projection matches
 	int descriptor_low = 50;  ///< ... for triangulation, fusion and keyframe matches
@@ -84,13 +85,13 @@ struct TrackingOptions : public mrpt::config::CLoadableOptions
 	bool reinit_extrapolate = true;  ///< a new map starts where constant velocity puts it
 	bool reinit_keep_depth = true;  ///< a new map gets the old map's median scene depth (scale)
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	void validate() const;
+   protected:
+	void declare(OptionTable& t) override;
+	void checkRelations() const override;
 };
 
 /// Local mapping: new points, fusion, culling, local bundle adjustment.
-struct MappingOptions : public mrpt::config::CLoadableOptions
+struct MappingOptions : public OptionSet
 {
 	int triangulation_neighbours = 20;  ///< best covisible keyframes searched for new points
 	double min_baseline_ratio = 0.01;  ///< baseline / neighbour's median depth below: skipped
@@ -110,21 +111,19 @@ struct MappingOptions : public mrpt::config::CLoadableOptions
 	double redundant_ratio = 0.9;  ///< keyframe culled when this fraction of its points ...
 	int redundant_observers = 3;  ///< ... is seen by this many other keyframes at the same scale
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-	void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-	void validate() const;
+   protected:
+	void declare(OptionTable& t) override;
 };
 
 /// All of the above.
-struct VoOptions
+struct VoOptions : public OptionGroup
 {
 	OrbOptions orb;
 	InitOptions init;
 	TrackingOptions tracking;
 	MappingOptions mapping;
 
-	void load(const mrpt::config::CConfigFileBase& c);  ///< from [vo.orb], [vo.init], ...
-	void save(mrpt::config::CConfigFileBase& c) const;
-	void validate() const;
+	/// [vo.orb], [vo.init], [vo.tracking], [vo.mapping]
+	std::vector<std::pair<std::string, OptionSet*>> parts() override;
 };
 }  // namespace vlo::vo

@@ -128,8 +128,9 @@ LidarOdometryResult LidarOdometry::process(
 	// Without deskewing, one registration. With it, the sweep is undistorted by the guessed motion,
 	// registered, and undistorted again by the motion found while that changes it noticeably (at
 	// the start, when the guess knows nothing, and when the motion changes). The map and the next
-	// scan get the features undistorted by the final motion.
-	const bool undistort = opt_.scan.deskew && frames_ && t_prev_ && t > *t_prev_;
+	// scan get the features undistorted by the final motion. The sensor's per-point times are
+	// always used (point_times); times from the azimuth only with deskew.
+	const bool undistort = (opt_.scan.deskew || rs.times_from_data) && frames_ && t_prev_ && t > *t_prev_;
 	const auto deskewed = [&](const Eigen::Isometry3d& motion) {
 		// The motion spans the time since the previous frame; deskewing needs one sweep's.
 		const Eigen::Isometry3d sweep = scaleMotion(motion, opt_.scan.scan_period / (t - *t_prev_));

@@ -31,6 +31,7 @@ void ScanOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
 	VLO_BOOL(time_from_first_point);
 	VLO_NUM(sweep_start_azimuth_deg, double);
 	VLO_BOOL(deskew);
+	VLO_BOOL(point_times);
 	VLO_NUM(deskew_reference, double);
 	VLO_NUM(max_deskew_passes, int);
 	VLO_NUM(deskew_tolerance, double);
@@ -57,7 +58,8 @@ void ScanOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::
 	MRPT_SAVE_CONFIG_VAR_COMMENT(clockwise, "sensor spins clockwise seen from above (Velodyne)");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(time_from_first_point, "sweep starts at the first point's azimuth");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(sweep_start_azimuth_deg, "sweep start when not from the first point [deg]");
-	MRPT_SAVE_CONFIG_VAR_COMMENT(deskew, "undistort features with the initial-guess motion");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(deskew, "undistort features with the initial-guess motion (times from the azimuth)");
+	MRPT_SAVE_CONFIG_VAR_COMMENT(point_times, "scans with per-point times: deskew with them to the frame's time");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(deskew_reference, "sweep fraction [0,1] the scan pose refers to");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(max_deskew_passes, "deskew + register again while the motion found changes");
 	MRPT_SAVE_CONFIG_VAR_COMMENT(deskew_tolerance, "... by more than this [m]");

@@ -21,7 +21,8 @@ struct DriveStats
 };
 
 // `moving`: each sweep is measured while the sensor moves from the previous frame's pose to this
-// one's (the frame's pose is that at the end of the sweep), as a real spinning LiDAR does.
+// one's (the frame's pose is that at the end of the sweep), as a real spinning LiDAR does; the
+// drive then starts one step into the path, already at speed.
 // `fields`: the scans carry the sensor's ring ids and/or per-point times.
 struct Fields
 {
@@ -34,11 +35,12 @@ DriveStats drive(const LidarModel& lidar, const LoamOptions& opt, const Path& pa
 	std::mt19937 rng(seed);
 	LidarOdometry lo(opt);
 	DriveStats st;
-	const Eigen::Isometry3d T0 = lidarPoseAt(path, 0);
+	const double s0 = moving ? step : 0.0;
+	const Eigen::Isometry3d T0 = lidarPoseAt(path, s0);
 	for (int i = 0; i < frames; ++i)
 	{
-		const Eigen::Isometry3d truth = lidarPoseAt(path, i * step);
-		PointCloud pc = (moving && i > 0) ? scan(world, lidar, lidarPoseAt(path, (i - 1) * step), truth, &rng) : scan(world, lidar, truth, &rng);
+		const Eigen::Isometry3d truth = lidarPoseAt(path, s0 + i * step);
+		PointCloud pc = moving ? scan(world, lidar, lidarPoseAt(path, s0 + (i - 1) * step), truth, &rng) : scan(world, lidar, truth, &rng);
 		pc.has_ring = fields.rings, pc.has_time = fields.times;
 		const LidarOdometryResult r = lo.process(0.1 * i, pc, std::nullopt);
 		const Eigen::Isometry3d rel = T0.inverse() * truth;

@@ -18,6 +18,7 @@ function(vlo_add_module name)
     add_executable(test_${name} ${tests})
     target_link_libraries(test_${name} PRIVATE vlo_${name} ${ARG_TEST_DEPS} GTest::gtest_main)
     target_compile_options(test_${name} PRIVATE ${VLO_WARNINGS})
+    target_include_directories(test_${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests/support)
     target_compile_definitions(test_${name} PRIVATE
       VLO_SHARED_DATA="${CMAKE_SOURCE_DIR}/../shared/data"
       VLO_BIN_DIR="${CMAKE_BINARY_DIR}/bin"

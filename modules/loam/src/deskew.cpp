@@ -17,20 +17,23 @@ Eigen::Isometry3d scaleMotion(const Eigen::Isometry3d& motion, double a)
 
 void deskew(ScanPoints& points, const Eigen::Isometry3d& motion, double reference)
 {
-	// Exact transforms at 1024 time steps: nearest-step error is 1/2048 of the sweep's motion
-	// (< 1 mm at 1.5 m per sweep) for one trig evaluation per step instead of per point.
+	// Exact transforms at 1024 time steps over [lo, hi], the sweep [0, 1] widened to the points'
+	// times (the sensor's times may start before or end after it): nearest-step error is 1/2048 of
+	// the span's motion (< 1 mm at 1.5 m per sweep) for one trig evaluation per step, not per point.
 	constexpr int kSteps = 1024;
+	float lo = 0.0f, hi = 1.0f;
+	for (const ScanPoint& p : points) lo = std::min(lo, p.time), hi = std::max(hi, p.time);
 	std::array<Eigen::Matrix3f, kSteps + 1> R;
 	std::array<Eigen::Vector3f, kSteps + 1> t;
 	for (int k = 0; k <= kSteps; ++k)
 	{
-		const Eigen::Isometry3d T = scaleMotion(motion, static_cast<double>(k) / kSteps - reference);
+		const Eigen::Isometry3d T = scaleMotion(motion, lo + static_cast<double>(hi - lo) * k / kSteps - reference);
 		R[k] = T.linear().cast<float>();
 		t[k] = T.translation().cast<float>();
 	}
 	for (ScanPoint& p : points)
 	{
-		const int k = std::clamp(static_cast<int>(std::lround(p.time * kSteps)), 0, kSteps);
+		const int k = std::clamp(static_cast<int>(std::lround((p.time - lo) / (hi - lo) * kSteps)), 0, kSteps);
 		p.p = R[k] * p.p + t[k];
 	}
 }

@@ -39,6 +39,8 @@ FeatureExtractor::FeatureExtractor(const FeatureOptions& o) : opt_(o) {}
 FeatureSet FeatureExtractor::extract(const RingScan& scan)
 {
 	FeatureSet out;
+	out.n_rings = scan.numRings();
+	out.rings_from_data = scan.rings_from_data;
 	for (int r = 0; r < scan.numRings(); ++r)
 		extractRing(scan.points.data() + scan.ring_begin[r], static_cast<int>(scan.ringSize(r)), out);
 	return out;

@@ -36,6 +36,17 @@ void LidarOdometry::reset()
 	frames_ = 0;
 	pose_ = odom_pose_ = odom_ref_ = map_T_odom_ = Eigen::Isometry3d::Identity();
 	t_prev_.reset();
+	first_raw_.reset();
+}
+
+void LidarOdometry::restartFromFirst(const FeatureSet& first)
+{
+	if (opt_.mapping.enabled)
+	{
+		mapper_.clear();
+		mapper_.insert(first, pose_);
+	}
+	if (opt_.odometry.enabled) odometry_.setReference(first);
 }
 
 std::vector<Eigen::Vector3f> LidarOdometry::mapPoints() const
@@ -128,27 +139,33 @@ LidarOdometryResult LidarOdometry::process(
 	// Without deskewing, one registration. With it, the sweep is undistorted by the guessed motion,
 	// registered, and undistorted again by the motion found while that changes it noticeably (at
 	// the start, when the guess knows nothing, and when the motion changes). The map and the next
-	// scan get the features undistorted by the final motion.
-	const bool undistort = opt_.scan.deskew && frames_ && t_prev_ && t > *t_prev_;
-	const auto deskewed = [&](const Eigen::Isometry3d& motion) {
+	// scan get the features undistorted by the final motion. The sensor's per-point times are
+	// always used (point_times); times from the azimuth only with deskew.
+	const bool deskewable = opt_.scan.deskew || rs.times_from_data;
+	const bool undistort = deskewable && frames_ && t_prev_ && t > *t_prev_;
+	const auto deskewed = [&](const FeatureSet& src, const Eigen::Isometry3d& motion) {
 		// The motion spans the time since the previous frame; deskewing needs one sweep's.
 		const Eigen::Isometry3d sweep = scaleMotion(motion, opt_.scan.scan_period / (t - *t_prev_));
-		FeatureSet d = raw;
+		FeatureSet d = src;
 		for (ScanPoints* s : {&d.sharp, &d.less_sharp, &d.flat, &d.less_flat}) deskew(*s, sweep, opt_.scan.deskew_reference);
 		r.ms.deskew += lapMs(t0);
 		return d;
 	};
+	// The first sweep had no motion to be deskewed with: the second brings one (constant velocity),
+	// so in each of its passes the map and the reference restart from the first sweep deskewed.
+	const bool redo_first = undistort && first_raw_ && frames_ == 1;
 	Eigen::Isometry3d motion = r.guess, pose, odom;
-	FeatureSet f = undistort ? deskewed(motion) : std::move(raw);
+	FeatureSet f = undistort ? deskewed(raw, motion) : std::move(raw);
 	for (r.passes = 1;; ++r.passes)
 	{
+		if (redo_first) restartFromFirst(deskewed(*first_raw_, motion));
 		registerFrame(f, r, odom, pose);
 		if (!undistort) break;
 		const Eigen::Isometry3d found = pose_.inverse() * pose;
 		const Eigen::Isometry3d change = motion.inverse() * found;
 		motion = found;
 		t0 = SteadyClock::now();
-		f = deskewed(motion);
+		f = deskewed(raw, motion);
 		if (r.passes >= opt_.scan.max_deskew_passes ||
 			(change.translation().norm() < opt_.scan.deskew_tolerance &&
 				rotationAngle(change.linear()) * 180.0 / M_PI < opt_.scan.deskew_tolerance_deg))
@@ -170,6 +187,8 @@ LidarOdometryResult LidarOdometry::process(
 	prior_->update(t, r.motion);
 	pose_ = pose;
 	t_prev_ = t;
+	if (frames_ == 0 && deskewable) first_raw_ = f;  // f is raw: the first frame is not deskewed
+	else first_raw_.reset();
 	++frames_;
 	r.ms.total = msSince(start);
 	return r;

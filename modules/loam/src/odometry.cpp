@@ -1,5 +1,6 @@
 #include "vlo/loam/odometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vlo::loam
@@ -14,14 +15,23 @@ void ScanToScanOdometry::setReference(const FeatureSet& f)
 	for (auto [set, pts] : {std::pair{&edges_, &f.less_sharp}, std::pair{&planes_, &f.less_flat}})
 	{
 		set->points = *pts;
-		set->rings.build(set->points, model_.numRings());
+		set->rings.build(set->points, std::max(model_.numRings(), f.n_rings));
 		if (opt_.use_kdtree) set->tree.build(set->points);
 	}
+	ref_rings_from_data_ = f.rings_from_data;
 	has_ref_ = true;
 }
 
-// The closest reference point within max_match_distance, or -1.
-int ScanToScanOdometry::firstNeighbour(const Set& s, const RingSearch::Query& q) const
+// The ring whose neighbourhood holds the query's match: its own beam when both scans carry the
+// sensor's ring ids (the beam's elevation is unknown then), else the ring model's at its elevation.
+int ScanToScanOdometry::queryRing(const FeatureSet& curr, const ScanPoint& sp, const RingSearch::Query& q) const
+{
+	if (curr.rings_from_data && ref_rings_from_data_) return sp.ring;
+	return model_.nearestRing(q.p.z(), std::hypot(q.p.x(), q.p.y()));
+}
+
+// The closest reference point within max_match_distance, or -1; the search starts on `r`.
+int ScanToScanOdometry::firstNeighbour(const Set& s, const RingSearch::Query& q, int r) const
 {
 	float best = max2_;
 	if (opt_.use_kdtree)
@@ -29,7 +39,6 @@ int ScanToScanOdometry::firstNeighbour(const Set& s, const RingSearch::Query& q)
 		const int j = s.tree.nearest(q.p, &best);
 		return (j >= 0 && best < max2_) ? j : -1;
 	}
-	const int r = model_.nearestRing(q.p.z(), std::hypot(q.p.x(), q.p.y()));
 	if (r < 0) return -1;
 	int j = s.rings.nearest(r, q, best);
 	for (int dr = 1; dr <= opt_.nearby_rings; ++dr)
@@ -65,7 +74,7 @@ void ScanToScanOdometry::findMatches(const FeatureSet& curr, const Eigen::Isomet
 	for (const ScanPoint& sp : curr.sharp)
 	{
 		const RingSearch::Query q(R * sp.p + t);
-		const int j = firstNeighbour(edges_, q);
+		const int j = firstNeighbour(edges_, q, queryRing(curr, sp, q));
 		if (j < 0) continue;
 		const int l = closestOnNearbyRings(edges_, edges_.points[j].ring, q);
 		if (l < 0) continue;
@@ -79,7 +88,7 @@ void ScanToScanOdometry::findMatches(const FeatureSet& curr, const Eigen::Isomet
 	for (const ScanPoint& sp : curr.flat)
 	{
 		const RingSearch::Query q(R * sp.p + t);
-		const int j = firstNeighbour(planes_, q);
+		const int j = firstNeighbour(planes_, q, queryRing(curr, sp, q));
 		if (j < 0) continue;
 		float best = max2_;
 		const int l = planes_.rings.nearest(planes_.points[j].ring, q, best, j);

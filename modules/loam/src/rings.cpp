@@ -9,6 +9,17 @@ namespace
 {
 constexpr double kDeg = M_PI / 180.0;
 constexpr float kTwoPi = 6.28318531f;
+constexpr float kMaxSweepsAway = 2.0f;  ///< a point time farther from the frame's is invalid
+
+// Rings of a scan that carries the sensor's ids: the highest id below kMaxRings + 1, at least the
+// ring model's count (ids are ordered by elevation, 0 = lowest, as the readers deliver them).
+int ringsInData(const PointCloud& scan, int model_rings)
+{
+	int n = model_rings;
+	for (const LidarPoint& p : scan)
+		if (p.ring < kMaxRings) n = std::max(n, p.ring + 1);
+	return n;
+}
 }  // namespace
 
 std::vector<double> RingModel::hdl64Elevations()
@@ -64,7 +75,9 @@ ScanPreprocessor::ScanPreprocessor(const ScanOptions& o) : opt_(o), model_(o) {}
 RingScan ScanPreprocessor::process(const PointCloud& scan)
 {
 	RingScan out;
-	const int n_rings = model_.numRings();
+	out.rings_from_data = scan.has_ring;
+	out.times_from_data = scan.has_time && opt_.point_times;
+	const int n_rings = out.rings_from_data ? ringsInData(scan, model_.numRings()) : model_.numRings();
 	out.n_input = scan.size();
 	out.ring_begin.assign(n_rings + 1, 0);
 	count_.assign(n_rings, 0);
@@ -74,6 +87,7 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 	const float min2 = static_cast<float>(opt_.min_range * opt_.min_range);
 	const float max2 = static_cast<float>(opt_.max_range * opt_.max_range);
 	const float dir = opt_.clockwise ? -1.0f : 1.0f;  // clockwise: azimuth decreases with time
+	const float ref = static_cast<float>(opt_.deskew_reference), per_period = static_cast<float>(1.0 / opt_.scan_period);
 	float az0 = static_cast<float>(opt_.sweep_start_azimuth_deg * kDeg);
 	bool have_start = !opt_.time_from_first_point;
 
@@ -90,25 +104,38 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 			++out.n_out_of_range;
 			continue;
 		}
-		const int ring = model_.ringOf(lp.z, std::sqrt(rho2));
+		const int ring = !out.rings_from_data ? model_.ringOf(lp.z, std::sqrt(rho2)) : lp.ring < n_rings ? lp.ring : -1;
 		if (ring < 0)
 		{
 			++out.n_out_of_fov;
 			continue;
 		}
-		const float az = fastAtan2(lp.y, lp.x);
-		if (!have_start)
-		{
-			az0 = az;
-			have_start = true;
-		}
-		float s = dir * (az - az0) * (1.0f / kTwoPi);  // in (-1, 1)
-		if (s < 0.0f) s += 1.0f;
-		if (s >= 1.0f) s = 0.0f;  // rounding of tiny negative values
 		ScanPoint p;
 		p.p = Eigen::Vector3f(lp.x, lp.y, lp.z);
-		p.time = s;
 		p.ring = ring;
+		if (out.times_from_data)
+		{
+			const float sweeps = lp.time * per_period;
+			if (!(std::fabs(sweeps) <= kMaxSweepsAway))  // NaN too: not a time of this sweep
+			{
+				++out.n_invalid;
+				continue;
+			}
+			p.time = ref + sweeps;  // the frame's time (0) is the pose's: deskew_reference
+		}
+		else
+		{
+			const float az = fastAtan2(lp.y, lp.x);
+			if (!have_start)
+			{
+				az0 = az;
+				have_start = true;
+			}
+			float s = dir * (az - az0) * (1.0f / kTwoPi);  // in (-1, 1)
+			if (s < 0.0f) s += 1.0f;
+			if (s >= 1.0f) s = 0.0f;  // rounding of tiny negative values
+			p.time = s;
+		}
 		buf_.push_back(p);
 		++count_[ring];
 	}

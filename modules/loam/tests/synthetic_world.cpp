@@ -111,7 +111,13 @@ PointCloud scan(const World& w, const LidarModel& m, const Eigen::Isometry3d& st
 
 	std::normal_distribution<double> noise(0.0, m.noise_sigma);
 	std::vector<Eigen::Vector3d> dirs;
-	for (double e : m.elevations_deg) dirs.emplace_back(std::cos(e * M_PI / 180), 0.0, std::sin(e * M_PI / 180));
+	std::vector<std::uint16_t> ring;  // per beam: rank by elevation
+	for (double e : m.elevations_deg)
+	{
+		dirs.emplace_back(std::cos(e * M_PI / 180), 0.0, std::sin(e * M_PI / 180));
+		ring.push_back(static_cast<std::uint16_t>(
+			std::count_if(m.elevations_deg.begin(), m.elevations_deg.end(), [e](double o) { return o < e; })));
+	}
 	PointCloud out;
 	out.reserve(static_cast<std::size_t>(m.columns) * dirs.size());
 	const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -123,8 +129,10 @@ PointCloud scan(const World& w, const LidarModel& m, const Eigen::Isometry3d& st
 		// The world direction of this column picks the bin (the sensor's yaw turns it).
 		const Eigen::Vector3d wd = T.linear() * Eigen::Vector3d(ca, sa, 0);
 		const int bin = std::clamp(static_cast<int>(std::floor((std::atan2(wd.y(), wd.x()) + M_PI) / (2 * M_PI) * kBins)), 0, kBins - 1);
-		for (const Eigen::Vector3d& d0 : dirs)
+		const float time = static_cast<float>(m.period * (static_cast<double>(k) / m.columns - 1.0));
+		for (std::size_t j = 0; j < dirs.size(); ++j)
 		{
+			const Eigen::Vector3d& d0 = dirs[j];
 			const Eigen::Vector3d dl(d0.x() * ca, d0.x() * sa, d0.z());
 			double t = w.castSubset(T.translation(), T.linear() * dl, m.max_range, bins[bin]);
 			if (t >= m.max_range)
@@ -134,7 +142,7 @@ PointCloud scan(const World& w, const LidarModel& m, const Eigen::Isometry3d& st
 			}
 			if (rng && m.noise_sigma > 0) t += noise(*rng);
 			const Eigen::Vector3f p = (t * dl).cast<float>();
-			out.push_back(LidarPoint{p.x(), p.y(), p.z(), 1.0f});
+			out.push_back(LidarPoint{p.x(), p.y(), p.z(), 1.0f, time, ring[j]});
 		}
 	}
 	return out;

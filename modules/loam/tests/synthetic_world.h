@@ -42,13 +42,16 @@ struct LidarModel
 	double max_range = 120.0;
 	double noise_sigma = 0.0;  ///< range noise [m]
 	bool nan_for_misses = false;  ///< emit NaN points where a beam hits nothing
+	double period = 0.1;  ///< seconds per sweep (the points' times)
 };
 LidarModel vlp16();
 LidarModel hdl64();  ///< the two-block layout, 2000 columns (~120k points)
 
 /// One sweep in firing order (column by column, clockwise from azimuth 180 deg); points in the
 /// LiDAR frame. The sensor moves from `start` to `end` (world poses) during the sweep, each column
-/// measured at its own time; pass start == end for a still sensor.
+/// measured at its own time; pass start == end for a still sensor. Every point gets its ring (rank
+/// of its beam's elevation) and time (seconds from the end of the sweep, in [-period, 0)); the
+/// scan's has_ring / has_time stay false: a test sets them to hand LOAM the sensor's values.
 PointCloud scan(const World& w, const LidarModel& m, const Eigen::Isometry3d& start, const Eigen::Isometry3d& end,
 	std::mt19937* rng = nullptr);
 inline PointCloud scan(const World& w, const LidarModel& m, const Eigen::Isometry3d& pose, std::mt19937* rng = nullptr)

@@ -198,4 +198,75 @@ TEST(Rings, RaycastScansLandOnTheirBeams)
 		}
 	}
 }
+
+TEST(Rings, SensorRingIdsGroupABeamLayoutNoTableKnows)
+{
+	// 24 beams unevenly spread over -25..+12 deg, read with a VLP-16 INI (16 beams, +-15 deg).
+	std::vector<double> el;
+	for (int k = 0; k < 24; ++k) el.push_back(-25.0 + 37.0 * std::pow(k / 23.0, 0.7));
+	PointCloud pc;
+	for (int c = 0; c < 360; ++c)
+		for (int k = 23; k >= 0; --k)  // top to bottom within a firing, as Velodynes fire
+		{
+			LidarPoint p = at(12.0, 180.0 - c, el[k]);
+			p.ring = static_cast<std::uint16_t>(k);
+			pc.push_back(p);
+		}
+	LidarPoint beyond = at(12.0, 0, 0);
+	beyond.ring = kMaxRings;  // a corrupt id: dropped, not a 65536-ring scan
+	pc.push_back(beyond);
+	ScanPreprocessor pre(vlp16Options().scan);
+
+	const RingScan guessed = pre.process(pc);  // without ids: elevations outside +-15.5 deg are lost
+	EXPECT_FALSE(guessed.rings_from_data);
+	EXPECT_GE(guessed.n_out_of_fov, 360u * 4);  // the 4 beams below -15.5 deg
+
+	pc.has_ring = true;
+	const RingScan rs = pre.process(pc);
+	EXPECT_TRUE(rs.rings_from_data);
+	EXPECT_EQ(rs.n_out_of_fov, 1u);
+	ASSERT_EQ(rs.numRings(), 24);
+	for (int r = 0; r < 24; ++r)
+	{
+		ASSERT_EQ(rs.ringSize(r), 360u) << "ring " << r;
+		for (std::size_t i = rs.ring_begin[r]; i < rs.ring_begin[r + 1]; ++i)
+		{
+			const ScanPoint& p = rs.points[i];
+			ASSERT_NEAR(std::atan2(p.p.z(), std::hypot(p.p.x(), p.p.y())) * 180 / M_PI, el[r], 1e-3);
+			EXPECT_NEAR(p.time, (i - rs.ring_begin[r]) / 360.0, 1e-4);  // azimuth times: no point times given
+		}
+	}
+}
+
+TEST(Rings, SensorTimesAreSweepsFromTheReference)
+{
+	ScanOptions o = vlp16Options().scan;
+	o.deskew_reference = 0.5;
+	o.scan_period = 0.1;
+	PointCloud pc;
+	for (int c = 0; c < 36; ++c)
+		for (int k = 0; k < 16; ++k)
+		{
+			LidarPoint p = at(10.0, 180.0 - 10 * c, -15.0 + 2 * k);
+			p.time = static_cast<float>(0.1 * c / 36.0);  // a driver whose times start at 0 (the frame's time)
+			pc.push_back(p);
+		}
+	LidarPoint stale = at(10.0, 0, 0);
+	stale.time = 0.5f;  // five sweeps away: not a point of this sweep
+	pc.push_back(stale);
+	pc.has_time = true;
+	const RingScan rs = ScanPreprocessor(o).process(pc);
+	EXPECT_TRUE(rs.times_from_data);
+	EXPECT_EQ(rs.n_invalid, 1u);
+	ASSERT_EQ(rs.points.size(), 36u * 16u);
+	for (int r = 0; r < 16; ++r)
+		for (std::size_t i = rs.ring_begin[r]; i < rs.ring_begin[r + 1]; ++i)
+			EXPECT_NEAR(rs.points[i].time, 0.5 + (i - rs.ring_begin[r]) / 36.0, 1e-5);  // up to 1.47: past the sweep's end
+
+	o.point_times = false;
+	const RingScan az = ScanPreprocessor(o).process(pc);
+	EXPECT_FALSE(az.times_from_data);
+	EXPECT_EQ(az.n_invalid, 0u);
+	for (std::size_t i = 0; i < az.ringSize(0); ++i) EXPECT_NEAR(az.points[i].time, i / 36.0, 1e-4);
+}
 }  // namespace vlo::loam::test

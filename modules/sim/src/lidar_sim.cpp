@@ -54,6 +54,9 @@ LidarSim::LidarSim(const LidarModel& model, bool distortion) : model_(model), di
 		if (distortion_ && v == 4 && phi < 0) v = 8;
 		viewOf_.push_back(v);
 	}
+	const auto& el = model_.elevations_deg;
+	for (double e : el)
+		ringOf_.push_back(static_cast<std::uint16_t>(std::count_if(el.begin(), el.end(), [e](double o) { return o < e; })));
 }
 
 double LidarSim::azimuthOf(int column) const { return M_PI - (column + 0.5) * 2 * M_PI / model_.azimuth_steps; }
@@ -80,6 +83,7 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 {
 	PointCloud cloud;
 	cloud.reserve(dirs_.size());
+	cloud.has_time = cloud.has_ring = distortion_;  // a rolling sweep says when and by which beam
 	const int rings = static_cast<int>(model_.elevations_deg.size());
 	for (int c = 0; c < model_.azimuth_steps; ++c)
 	{
@@ -87,7 +91,8 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 		// Beam origin and rotation in the view's optical frame (identity motion without distortion).
 		Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 		T.linear() = views_[vi].R.transpose();
-		if (distortion_) T = views[vi].world_T_cam.inverse() * world_T_lidar(firingTime(azimuthOf(c)));
+		const double tau = distortion_ ? firingTime(azimuthOf(c)) : 0.0;
+		if (distortion_) T = views[vi].world_T_cam.inverse() * world_T_lidar(tau);
 		const DepthLookup look(tiles[vi], K_);
 		for (int j = 0; j < rings; ++j)
 		{
@@ -100,7 +105,7 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 			const double noisy = r + noise.range_sigma * rng.normal();
 			if (rng.uniform() < noise.dropout || noisy < model_.min_range || noisy > model_.max_range) continue;
 			const Eigen::Vector3d p = noisy * dL;
-			cloud.push_back({float(p.x()), float(p.y()), float(p.z()), static_cast<float>(gray / 255.0)});
+			cloud.push_back({float(p.x()), float(p.y()), float(p.z()), static_cast<float>(gray / 255.0), float(tau), ringOf_[j]});
 		}
 	}
 	return cloud;

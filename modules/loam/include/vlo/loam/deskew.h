@@ -9,7 +9,8 @@
 namespace vlo::loam
 {
 /// `motion` is the pose of this sweep's frame in the previous sweep's frame (one sweep apart);
-/// points at sweep time s are moved into the frame at sweep time `reference` (both in [0, 1]).
+/// points at sweep time s (in sweeps; usually in [0, 1], any value allowed) are moved into the
+/// frame at sweep time `reference`.
 void deskew(ScanPoints& points, const Eigen::Isometry3d& motion, double reference);
 
 /// motion^a on SE(3), approximated like A-LOAM: rotation angle and translation both scaled by a.

@@ -76,6 +76,8 @@ class LidarOdometry
    private:
 	LidarOdometryResult skip(LidarOdometryResult r, const std::string& why);
 	void registerFrame(const FeatureSet& f, LidarOdometryResult& r, Eigen::Isometry3d& odom, Eigen::Isometry3d& pose);
+	/// The map and the scan-to-scan reference hold only `first`, the first frame's features (deskewed).
+	void restartFromFirst(const FeatureSet& first);
 
 	LoamOptions opt_;
 	ScanPreprocessor pre_;
@@ -90,5 +92,6 @@ class LidarOdometry
 	Eigen::Isometry3d odom_ref_ = Eigen::Isometry3d::Identity();  ///< odometry frame, reference scan
 	Eigen::Isometry3d map_T_odom_ = Eigen::Isometry3d::Identity();  ///< A-LOAM's wmap_T_odom
 	std::optional<double> t_prev_;
+	std::optional<FeatureSet> first_raw_;  ///< the first frame's features, until the second deskews them
 };
 }  // namespace vlo::loam

@@ -4,7 +4,7 @@
 // relative motion is solved for, alternating matching and solving.
 //
 // Neighbours: the first one is the closest reference point, searched on the rings within
-// nearby_rings of the query's elevation (or, with use_kdtree, in a kd-tree over the whole scan as
+// nearby_rings of the query's elevation, or of its own ring when the scans carry ring ids (or, with use_kdtree, in a kd-tree over the whole scan as
 // A-LOAM does: the same point in practice, but the tree costs milliseconds to build every frame);
 // the line's second point is the closest on a nearby ring, the plane's second the closest on the
 // first one's ring and its third the closest on a nearby ring.
@@ -54,13 +54,15 @@ class ScanToScanOdometry
 		RingSearch rings;
 		PointKdTree tree;
 	};
-	int firstNeighbour(const Set& s, const RingSearch::Query& q) const;
+	int queryRing(const FeatureSet& curr, const ScanPoint& sp, const RingSearch::Query& q) const;
+	int firstNeighbour(const Set& s, const RingSearch::Query& q, int r) const;
 	int closestOnNearbyRings(const Set& s, int ring, const RingSearch::Query& q) const;
 
 	OdometryOptions opt_;
 	RingModel model_;
 	float max2_;
 	bool has_ref_ = false;
+	bool ref_rings_from_data_ = false;
 	Set edges_, planes_;
 };
 }  // namespace vlo::loam

@@ -24,7 +24,8 @@ struct ScanOptions : public OptionSet
 	bool clockwise = true;  ///< rotation seen from above (Velodyne: clockwise)
 	bool time_from_first_point = true;  ///< sweep starts at the first point's azimuth
 	double sweep_start_azimuth_deg = 180.0;  ///< used when time_from_first_point is false
-	bool deskew = false;  ///< undistort features with the initial-guess motion
+	bool deskew = false;  ///< undistort features with the initial-guess motion (sweep times from the azimuth)
+	bool point_times = true;  ///< a scan with the sensor's per-point times is deskewed with them, to the frame's time
 	double deskew_reference = 1.0;  ///< fraction of the sweep the scan's pose refers to
 	int max_deskew_passes = 3;  ///< deskew + register again while the motion found still changes
 	double deskew_tolerance = 0.01;  ///< ... by more than this [m]

@@ -1,7 +1,8 @@
 #pragma once
 // Scan preprocessing: which beam (ring) each return came from, when in the sweep it was measured,
-// and which returns to drop. The point cloud type has no ring or time fields, so both come from
-// geometry: the ring from the elevation angle, the time from the azimuth.
+// and which returns to drop. The sensor's ring ids and per-point times are used when the scan has
+// them; otherwise both come from geometry: the ring from the elevation angle (the ring model), the
+// time from the azimuth.
 #include <vlo/core/frame.h>
 #include <vlo/loam/options.h>
 #include <vlo/loam/types.h>
@@ -11,6 +12,9 @@
 
 namespace vlo::loam
 {
+/// Ring ids from the data at or above this are dropped (as out of the field of view).
+constexpr int kMaxRings = 256;
+
 /// Beam elevations of a spinning LiDAR and the elevation -> ring lookup.
 class RingModel
 {
@@ -53,7 +57,9 @@ inline float fastAtan2(float y, float x)
 }
 
 /// Drops invalid, too close/far and out-of-view returns, assigns rings and sweep times, and
-/// groups the points by ring in time order. Never throws on bad data (the counts say what was
+/// groups the points by ring in time order. A scan with ring ids keeps them (no elevation table:
+/// any beam layout works) and has max(the model's rings, highest id + 1) rings; a scan with times
+/// (and point_times) gets time = deskew_reference + time / scan_period. Never throws on bad data (the counts say what was
 /// dropped); an empty or all-invalid scan gives a RingScan without points.
 class ScanPreprocessor
 {

@@ -9,7 +9,8 @@
 namespace vlo::loam
 {
 /// A preprocessed LiDAR return: position in the LiDAR frame, beam (ring) index counted from the
-/// lowest beam, and time within the sweep as a fraction in [0, 1).
+/// lowest beam, and time within the sweep in sweeps: a fraction in [0, 1) from the azimuth, or
+/// deskew_reference + the sensor's time / scan_period (any value) from per-point times.
 struct ScanPoint
 {
 	Eigen::Vector3f p = Eigen::Vector3f::Zero();
@@ -24,9 +25,11 @@ struct RingScan
 	ScanPoints points;  ///< ring 0, then ring 1, ...
 	std::vector<std::size_t> ring_begin;  ///< n_rings + 1 offsets into points
 	std::size_t n_input = 0;  ///< points given
-	std::size_t n_invalid = 0;  ///< NaN / infinite
+	std::size_t n_invalid = 0;  ///< NaN / infinite, or a time more than two sweeps from the frame's
 	std::size_t n_out_of_range = 0;  ///< closer than min_range or farther than max_range
-	std::size_t n_out_of_fov = 0;  ///< elevation outside every beam
+	std::size_t n_out_of_fov = 0;  ///< elevation outside every beam, or a ring id beyond kMaxRings
+	bool rings_from_data = false;  ///< rings are the sensor's ids, not from the elevation table
+	bool times_from_data = false;  ///< times are the sensor's, not from the azimuth
 
 	int numRings() const { return ring_begin.empty() ? 0 : static_cast<int>(ring_begin.size()) - 1; }
 	std::size_t ringSize(int r) const { return ring_begin[r + 1] - ring_begin[r]; }
@@ -40,6 +43,8 @@ struct FeatureSet
 	ScanPoints less_sharp;  ///< edge points the next scan matches against (sharp included)
 	ScanPoints flat;  ///< flattest points: matched against the reference
 	ScanPoints less_flat;  ///< plane points the next scan matches against (downsampled)
+	int n_rings = 0;  ///< rings of the scan (0: unknown, the ring model's)
+	bool rings_from_data = false;  ///< ring ids are the sensor's: a point's own ring is its elevation's
 
 	bool empty() const { return less_sharp.empty() && less_flat.empty(); }
 };

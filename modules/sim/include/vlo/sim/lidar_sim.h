@@ -58,6 +58,7 @@ class LidarSim
 	std::vector<ViewDef> views_;
 	std::vector<Eigen::Vector3d> dirs_;  // per beam (ring-minor), LiDAR frame
 	std::vector<int> viewOf_;  // per azimuth column
+	std::vector<std::uint16_t> ringOf_;  // per beam: its rank by elevation (0 = lowest)
 	double azimuthOf(int column) const;
 };
 }  // namespace vlo::sim

@@ -1,6 +1,8 @@
 // The A-LOAM reimplementation of modules/loam as the LiDAR odometry module "aloam".
 #include <vlo/kernel/lidar_odometry.h>
 #include <vlo/loam/lidar_odometry.h>
+#include <vlo/loam/ring_count.h>
+#include <vlo/loam/rings.h>
 
 namespace vlo
 {
@@ -20,12 +22,14 @@ class AloamModule : public LidarOdometryModule
 		opt_.prior.source = "external";
 		config.load(opt_.prior, "loam.prior");
 		lo_ = std::make_unique<loam::LidarOdometry>(opt_);  // validates the options
+		ring_check_.emplace(config.origin(), opt_.scan, loam::RingModel(opt_.scan).elevationsDeg());
 	}
 
 	Eigen::Isometry3d process(
 		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
 	{
 		mount_.observe(frame);
+		ring_check_->observe(frame.scan);
 		const auto r = lo_->process(frame.t, frame.scan, mount_.lidarMotion(vehicle_motion));
 
 		table.set("lo_status", std::string(loam::toString(r.status)));
@@ -51,6 +55,7 @@ class AloamModule : public LidarOdometryModule
    private:
 	loam::LoamOptions opt_;
 	std::unique_ptr<loam::LidarOdometry> lo_;
+	std::optional<loam::RingModelCheck> ring_check_;
 	LidarMount mount_;
 };
 VLO_REGISTER_MODULE(LidarOdometryModule, "aloam", AloamModule);

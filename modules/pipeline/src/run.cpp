@@ -11,6 +11,7 @@
 #include <vlo/pipeline/global_map.h>
 #include <vlo/pipeline/pipeline_options.h>
 #include <vlo/pipeline/run.h>
+#include <vlo/pipeline/run_folder.h>
 #include <vlo/pipeline/run_outputs.h>
 
 #include <unistd.h>
@@ -92,6 +93,7 @@ RunSummary runPipeline(const RunRequest& req)
 	const RunPlan plan = popt.plan();
 	Stages stages = makeStages(popt, plan, config);
 	checkOutputDir(req.out);
+	RunFolder folder(req.out, req.overwrite);
 
 	RawlogReaderOptions ropt;
 	ropt.camera_label = popt.camera_label;
@@ -147,12 +149,14 @@ RunSummary runPipeline(const RunRequest& req)
 
 	outputs.map = globalMap.points();
 	prepareOutputDir(req.out);
+	folder.clearPreviousRun();
 	RunSummary summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);
 	summary.frames = outputs.table.rows();
 	summary.seconds = loopSeconds;
 	summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;
 	summary.reader_stats = reader.statsSummary();
 	writeSummaryJson(req.out + "/summary.json", summary, req);
+	folder.recordWritten();
 	return summary;
 }
 }  // namespace vlo

@@ -16,7 +16,7 @@ for pair in "$@"; do
 	name=$(basename "$rawlog" .rawlog)
 	dir=$out/$name
 	/usr/bin/time -f "%U %S %M" -o "$dir.time" taskset -c 0 "$bin/vlo-run" --rawlog "$rawlog" --ini "$ini" \
-		--set pipeline.max_frames="$frames" --out "$dir" --quiet > "$dir.log" 2>&1
+		--set pipeline.max_frames="$frames" --out "$dir" --overwrite --quiet > "$dir.log" 2>&1
 	read -r user sys rss < "$dir.time"
 	awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "ms_total") c = i; next } { print $c }' "$dir/frames.csv" |
 		sort -g | awk -v name="$name" -v user="$user" -v sys="$sys" -v rss="$rss" '

@@ -24,7 +24,7 @@ fi
 mkdir -p "$OUT"
 INI="$ROOT/ini/sim-hdl64.ini"
 if [ -x "$BIN/vlo-run" ] && [ -f "$INI" ]; then
-	"$BIN/vlo-run" --rawlog "$SAMPLE" --ini "$INI" --out "$OUT" --gt "$GT"
+	"$BIN/vlo-run" --rawlog "$SAMPLE" --ini "$INI" --out "$OUT" --gt "$GT" --overwrite  # results/sample is make run's own
 	# The final trajectory of the configured mode, as summary.json names it.
 	TRAJ=$(grep -o '"trajectory": "[^"]*"' "$OUT/summary.json" | cut -d'"' -f4)
 	if [ -x "$BIN/vlo-eval" ] && [ -f "$OUT/$TRAJ" ]; then

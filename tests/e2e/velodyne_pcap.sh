@@ -37,13 +37,13 @@ INI
 	ls grab_"$1"/*.rawlog > /dev/null 2>&1 || fail "$1: rawlog-grabber wrote nothing: $(tail -3 "grab_$1.log")"
 }
 
-# run_case MODEL PCAP FRAMES MAX_PATH_M: vlo-run (LiDAR only) tracks every scan of the capture
+# run_case MODEL PCAP INI FRAMES MAX_PATH_M: vlo-run (LiDAR only) tracks every scan of the capture
 run_case() {
-	local model=$1 pcap=$2 frames=$3 max_path=$4
+	local model=$1 pcap=$2 ini=$3 frames=$4 max_path=$5
 	grab "$model" "$pcap"
 	local rawlog
 	rawlog=$(ls grab_"$model"/*.rawlog | head -1)
-	"$BIN/vlo-run" --rawlog "$rawlog" --ini "$INI/vlp16.ini" --out "out_$model" --quiet \
+	"$BIN/vlo-run" --rawlog "$rawlog" --ini "$INI/$ini" --out "out_$model" --quiet \
 		--set pipeline.mode=lo --set pipeline.lidar_label=LIDAR_SCAN > /dev/null 2> "run_$model.err" ||
 		{ fail "$model: vlo-run failed: $(cat "run_$model.err")"; return; }
 	[ "$(wc -l < "out_$model/trajectory_lo.tum")" -eq "$frames" ] || fail "$model: not $frames poses"
@@ -53,9 +53,9 @@ run_case() {
 	below "$path" "$max_path" || fail "$model: path $path m above $max_path m"
 }
 # The VLP-16 capture is 0.2 s of a slowly moving sensor; the HDL-32E one starts with a partial sweep.
-run_case VLP16 "$SAMPLES/sample_velodyne_vlp16_gps.pcap" 3 0.1
+run_case VLP16 "$SAMPLES/sample_velodyne_vlp16_gps.pcap" vlp16.ini 3 0.1
 grep -q "default calibration" out_VLP16/summary.json && fail "VLP16: its own calibration was replaced"
-run_case HDL32 "$SAMPLES/sample_velodyne_hdl32.pcap" 2 0.5
+run_case HDL32 "$SAMPLES/sample_velodyne_hdl32.pcap" hdl32.ini 2 0.5
 grep -q "2 Velodyne scans decoded with the model's default calibration" out_HDL32/summary.json ||
 	fail "HDL32: the grabber's wrong (16-laser) calibration was used"
 

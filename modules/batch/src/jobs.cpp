@@ -64,7 +64,8 @@ RunJob runJob(const Plan& p, const Sequence& s, const Config& c, const std::stri
 	j.name = s.name + "/" + c.name;
 	j.dir = runDir(out, s.name, c.name);
 	const std::string ini = c.ini.empty() ? s.ini : c.ini;
-	j.run.argv = {bin_dir + "/vlo-run", "--rawlog", s.rawlog, "--ini", ini, "--out", j.dir, "--gt", s.gt, "--quiet"};
+	j.run.argv = {bin_dir + "/vlo-run", "--rawlog", s.rawlog, "--ini", ini, "--out", j.dir, "--gt", s.gt, "--quiet",
+		"--overwrite"};  // a run folder is the plan's: a rerun replaces its earlier attempt
 	for (const auto& o : c.overrides)
 	{
 		j.run.argv.push_back("--set");

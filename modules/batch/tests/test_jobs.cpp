@@ -93,7 +93,7 @@ TEST(BatchJobs, RunCommandLines)
 	EXPECT_EQ(j.name, "seq/vo");
 	EXPECT_EQ(j.dir, "/out/runs/seq/vo");
 	const std::vector<std::string> run{"/bin dir/vlo-run", "--rawlog", "/data/seq.rawlog", "--ini", "/ini/sim hdl64.ini", "--out",
-		"/out/runs/seq/vo", "--gt", "/data/seq.gt.tum", "--quiet", "--set", "pipeline.mode=vo", "--set", "a.b=x y"};
+		"/out/runs/seq/vo", "--gt", "/data/seq.gt.tum", "--quiet", "--overwrite", "--set", "pipeline.mode=vo", "--set", "a.b=x y"};
 	EXPECT_EQ(j.run.argv, run);
 	const std::vector<std::string> eval{"/bin dir/vlo-eval", "--gt", "/data/seq.gt.tum", "--metric", "all", "--align", "sim3",
 		"--kitti-lengths", "5,10", "--est", "trajectory_vo.tum", "--json", "eval_vo.json", "--write-aligned", "aligned_vo.tum"};

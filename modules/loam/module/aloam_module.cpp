@@ -1,6 +1,8 @@
 // The A-LOAM reimplementation of modules/loam as the LiDAR odometry module "aloam".
 #include <vlo/kernel/lidar_odometry.h>
 #include <vlo/loam/lidar_odometry.h>
+#include <vlo/loam/ring_count.h>
+#include <vlo/loam/rings.h>
 
 namespace vlo
 {
@@ -15,13 +17,15 @@ class AloamModule : public LidarOdometryModule
 		// the external prior is constant velocity, as in A-LOAM. constant_velocity ignores any guess.
 		opt_.prior.source = "external";
 		for (const auto& [section, options] : opt_.parts()) config.load(*options, section);
-		lo_ = std::make_unique<loam::LidarOdometry>(opt_);
+		lo_ = std::make_unique<loam::LidarOdometry>(opt_);  // validates the options
+		ring_check_.emplace(config.origin(), opt_.scan, loam::RingModel(opt_.scan).elevationsDeg());
 	}
 
 	Eigen::Isometry3d process(
 		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
 	{
 		mount_.observe(frame);
+		ring_check_->observe(frame.scan);
 		const auto r = lo_->process(frame.t, frame.scan, mount_.lidarMotion(vehicle_motion));
 
 		table.set("lo_status", std::string(loam::toString(r.status)));
@@ -47,6 +51,7 @@ class AloamModule : public LidarOdometryModule
    private:
 	loam::LoamOptions opt_;
 	std::unique_ptr<loam::LidarOdometry> lo_;
+	std::optional<loam::RingModelCheck> ring_check_;
 	LidarMount mount_;
 };
 VLO_REGISTER_MODULE(LidarOdometryModule, "aloam", AloamModule);

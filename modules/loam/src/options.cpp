@@ -33,7 +33,8 @@ void ScanOptions::declare(OptionTable& t)
 	t.add("clockwise", clockwise, "true | false", "sensor spins clockwise seen from above (Velodyne)");
 	t.add("time_from_first_point", time_from_first_point, "true | false", "sweep starts at the first point's azimuth");
 	t.add("sweep_start_azimuth_deg", sweep_start_azimuth_deg, "any", "sweep start when not from the first point [deg]");
-	t.add("deskew", deskew, "true | false", "undistort features with the initial-guess motion");
+	t.add("deskew", deskew, "true | false", "undistort features with the initial-guess motion (times from the azimuth)");
+	t.add("point_times", point_times, "true | false", "scans with per-point times: deskew with them to the frame's time");
 	t.add("deskew_reference", deskew_reference, "[0, 1]", "sweep fraction [0,1] the scan pose refers to");
 	t.add("max_deskew_passes", max_deskew_passes, "[1, 10]", "deskew + register again while the motion found changes");
 	t.add("deskew_tolerance", deskew_tolerance, ">= 0", "... by more than this [m]");

@@ -4,21 +4,39 @@
 
 namespace vlo
 {
+std::uint64_t GlobalMap::key(const Eigen::Vector3f& w) const
+{
+	// 21 bits per axis: +-200 km at 0.2 m voxels.
+	const float leaf = static_cast<float>(leaf_);
+	const auto cell = [&](float v) {
+		return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / leaf)) & 0x1FFFFF);
+	};
+	return (cell(w.x()) << 42) | (cell(w.y()) << 21) | cell(w.z());
+}
+
 void GlobalMap::insert(const PointCloud& scan, const Eigen::Isometry3d& world_T_lidar)
 {
 	const Eigen::Isometry3f T = world_T_lidar.cast<float>();
 	const float r2 = static_cast<float>(max_range_ * max_range_);
-	// 21 bits per axis: +-200 km at 0.2 m voxels.
-	const auto cell = [&](float v) {
-		return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / leaf_)) & 0x1FFFFF);
-	};
 	for (const auto& p : scan)
 	{
 		const Eigen::Vector3f s(p.x, p.y, p.z);
 		if (s.squaredNorm() > r2) continue;
 		const Eigen::Vector3f w = T * s;
-		const std::uint64_t key = (cell(w.x()) << 42) | (cell(w.y()) << 21) | cell(w.z());
-		if (occupied_.insert(key).second) points_.push_back({w.x(), w.y(), w.z(), p.intensity});
+		if (occupied_.insert(key(w)).second) points_.push_back({w.x(), w.y(), w.z(), p.intensity});
 	}
+	while (points_.size() > max_points_) coarsen();
+}
+
+void GlobalMap::coarsen()
+{
+	leaf_ *= 2;
+	occupied_.clear();
+	std::size_t kept = 0;
+	for (const auto& p : points_)
+		if (occupied_.insert(key({p.x, p.y, p.z})).second) points_[kept++] = p;
+	points_.resize(kept);
+	points_.shrink_to_fit();
+	occupied_.rehash(0);
 }
 }  // namespace vlo

@@ -12,6 +12,7 @@
 #include <vlo/pipeline/global_map.h>
 #include <vlo/pipeline/pipeline_options.h>
 #include <vlo/pipeline/run.h>
+#include <vlo/pipeline/run_folder.h>
 #include <vlo/pipeline/run_outputs.h>
 #include <vlo/pipeline/stage_timings.h>
 
@@ -95,6 +96,7 @@ RunSummary runPipeline(const RunRequest& req)
 	logger().logFmt(mrpt::system::LVL_DEBUG, "mode %s: motion source '%s', LiDAR odometry '%s'", plan.name.c_str(),
 		plan.motion_source.empty() ? "none" : plan.motion_source.c_str(), plan.lidar_odometry ? popt.lidar_odometry.c_str() : "none");
 	checkOutputDir(req.out);
+	RunFolder folder(req.out, req.overwrite);
 
 	RawlogReaderOptions ropt;
 	ropt.camera_label = popt.camera_label;
@@ -150,12 +152,14 @@ RunSummary runPipeline(const RunRequest& req)
 
 	outputs.map = globalMap.points();
 	prepareOutputDir(req.out);
+	folder.clearPreviousRun();
 	RunSummary summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);
 	summary.frames = outputs.table.rows();
 	summary.seconds = loopSeconds;
 	summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;
 	summary.reader_stats = reader.statsSummary();
 	writeSummaryJson(req.out + "/summary.json", summary, req);
+	folder.recordWritten();
 	logger().logStr(mrpt::system::LVL_DEBUG, summary.reader_stats);
 	logger().logStr(mrpt::system::LVL_INFO, "time per stage over " + std::to_string(summary.frames) + " frames (frames.csv):\n" +
 			formatStageTimings(stageTimings(outputs.table)));

@@ -52,7 +52,7 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::stri
 		ms.title = "map and trajectory";
 		renderMap3D(o.map, trajs, gt.empty() ? nullptr : &gt, dir + "/map3d.png", ms);
 	}
-	for (const auto& f : o.sample_frames)
+	for (const auto& f : o.sample_frames.items())
 	{
 		if (!f.has_image || !f.has_scan) continue;
 		ProjectedScanStyle ps;
@@ -69,7 +69,7 @@ void RunOutputs::addSampleFrame(const Frame& f)
 {
 	Frame copy = f;
 	copy.image = f.image.makeDeepCopy();  // the reader may reuse the image buffer
-	sample_frames.push_back(std::move(copy));
+	sample_frames.offer(std::move(copy));
 }
 
 RunSummary RunOutputs::write(

@@ -1,6 +1,7 @@
 // The paper's scale corrector (modules/scale) as the scale-correction module "lidar_depth": per
 // frame, the estimate from C(i-1), L(i-1), C(i) and the VO's camera motion, the policy's decision,
 // the rescaling through the caller, the scale_* columns of frames.csv, and its snapshots.
+#include <vlo/core/bounded_sample.h>
 #include <vlo/kernel/scale_correction.h>
 #include <vlo/scale/overlay.h>
 #include <vlo/scale/policy.h>
@@ -77,7 +78,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		{
 			Frame copy = *prev;
 			copy.image = prev->image.makeDeepCopy();
-			snapshots_.push_back({std::move(copy), cur.index, e});
+			snapshots_.offer({std::move(copy), cur.index, e});
 		}
 		return applied;
 	}
@@ -95,7 +96,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 							 {"correction applied", history_.t, history_.correction, std::nullopt, true, false}},
 				dir + "/scale.png", style);
 		}
-		for (const auto& snap : snapshots_)
+		for (const auto& snap : snapshots_.items())
 		{
 			const auto& e = snap.estimate;
 			ProjectedScanStyle ps;
@@ -138,7 +139,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 	std::unique_ptr<scale::ScaleCorrector> corrector_;
 	std::unique_ptr<scale::ScaleCorrectionPolicy> policy_;
 	int snapshot_every_ = 0;
-	std::vector<ScaleSnapshot> snapshots_;
+	BoundedSample<ScaleSnapshot> snapshots_{24};  ///< spread over the drive, bounded however long it is
 	struct
 	{
 		std::vector<double> t, estimate, correction;  ///< per frame with an estimate (NaN: none)

@@ -1,6 +1,8 @@
 #pragma once
 // The map a run writes to map.pcd: scans registered with the final poses, thinned to one point per
-// voxel. Unlike LOAM's bounded local map it covers the whole drive.
+// voxel. Unlike LOAM's bounded local map it covers the whole drive, so it has a budget of points:
+// past it the voxels double in size and the map is thinned again, and memory stays bounded however
+// long the drive (a 5 km drive gets a coarser map.pcd than a 500 m one; doc/ROBUSTNESS.md).
 #include <vlo/core/frame.h>
 
 #include <Eigen/Geometry>
@@ -12,15 +14,28 @@ namespace vlo
 class GlobalMap
 {
    public:
+	/// About 200 MB with the voxel index; a 400 m urban drive holds about 1M at 0.2 m.
+	static constexpr std::size_t kDefaultMaxPoints = 4'000'000;
+
 	/// leaf: voxel edge [m] (> 0); max_range: scan points farther from the sensor are not added.
-	GlobalMap(double leaf, double max_range) : leaf_(leaf), max_range_(max_range) {}
+	GlobalMap(double leaf, double max_range, std::size_t max_points = kDefaultMaxPoints)
+		: leaf_(leaf), max_range_(max_range), max_points_(max_points)
+	{
+	}
 
 	/// Adds the scan (LiDAR frame) seen from world_T_lidar; keeps the first point of each voxel.
 	void insert(const PointCloud& scan, const Eigen::Isometry3d& world_T_lidar);
 	const PointCloud& points() const { return points_; }
+	/// The voxel edge now: the one asked for, doubled each time the budget was reached.
+	double leaf() const { return leaf_; }
 
    private:
+	std::uint64_t key(const Eigen::Vector3f& w) const;
+	/// Doubles the voxel and keeps the first point of each new voxel, in the order they came.
+	void coarsen();
+
 	double leaf_, max_range_;
+	std::size_t max_points_;
 	std::unordered_set<std::uint64_t> occupied_;
 	PointCloud points_;
 };

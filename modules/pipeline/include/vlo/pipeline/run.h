@@ -12,6 +12,7 @@ struct RunRequest
 	std::string rawlog, ini, out;
 	std::vector<std::string> overrides;  ///< "section.key=value"
 	std::string gt;  ///< optional ground truth TUM, used only to draw snapshots
+	bool overwrite = false;  ///< replace the run that `out` holds (RunFolder)
 };
 
 struct RunSummary

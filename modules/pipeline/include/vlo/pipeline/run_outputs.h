@@ -1,5 +1,6 @@
 #pragma once
 // Everything a run accumulates, and how it is written into the output folder.
+#include <vlo/core/bounded_sample.h>
 #include <vlo/core/frame.h>
 #include <vlo/io/trajectory.h>
 #include <vlo/kernel/frame_table.h>
@@ -19,7 +20,8 @@ struct RunOutputs
 	Trajectory lidar;  ///< the LiDAR odometry's (trajectory_lo.tum or trajectory_vlo.tum), vehicle frame
 	const MotionSource* motion_source = nullptr;  ///< its path is trajectory_vo.tum; draws its own snapshots
 	PointCloud map;  ///< vehicle frame of the first frame (already thinned)
-	std::vector<Frame> sample_frames;  ///< for projected-scan snapshots
+	/// For projected-scan snapshots: at most 24 (3 MB each for KITTI) over the whole drive.
+	BoundedSample<Frame> sample_frames{24};
 
 	void addSampleFrame(const Frame& f);
 	/// Writes trajectories, frames.csv, map.pcd, run.ini and snapshots/; returns the summary figures.

@@ -1,0 +1,31 @@
+#pragma once
+// The --out folder of vlo-run: a folder that holds another run is refused unless the user says
+// --overwrite; then that run's files, and only those, are removed before the new run writes. What a run
+// wrote is listed in DIR/.vlo-run-files, so a later --overwrite never touches the user's own files.
+#include <set>
+#include <string>
+
+namespace vlo
+{
+class RunFolder
+{
+   public:
+	static constexpr const char* kManifest = ".vlo-run-files";
+
+	/// Throws InputError naming the folder and --overwrite when it holds another run and !overwrite.
+	/// Changes nothing on disk.
+	RunFolder(std::string dir, bool overwrite);
+	/// Removes the previous run's files (the folder must exist) and notes what else is there.
+	void clearPreviousRun();
+	/// Writes the manifest: every file in the folder that was not there at clearPreviousRun().
+	void recordWritten() const;
+
+	/// True when `dir` holds a manifest or one of the files every vlo-run leaves (summary.json, run.ini,
+	/// frames.csv, trajectory_*.tum) from before manifests existed.
+	static bool holdsRun(const std::string& dir);
+
+   private:
+	std::string dir_;
+	std::set<std::string> before_;  ///< relative paths of the files that are not this run's
+};
+}  // namespace vlo

@@ -12,7 +12,7 @@ frames=40
 
 for ini in "$INI"/*.ini; do
 	for mode in lo vlo vo; do
-		"$BIN/vlo-run" --rawlog drive.rawlog --ini "$ini" --out "load_$mode" --quiet --set pipeline.lidar_odometry=icp \
+		"$BIN/vlo-run" --rawlog drive.rawlog --ini "$ini" --out "load_$mode" --overwrite --quiet --set pipeline.lidar_odometry=icp \
 			--set pipeline.mode=$mode --set pipeline.max_frames=2 --set pipeline.snapshots=false 2> err.txt ||
 			fail "$(basename "$ini") mode $mode: $(cat err.txt)"
 	done

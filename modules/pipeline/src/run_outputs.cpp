@@ -116,7 +116,14 @@ void writeSummaryJson(const std::string& path, const RunSummary& s, const RunReq
 	nlohmann::ordered_json j = {{"mode", s.mode}, {"rawlog", req.rawlog}, {"ini", req.ini}, {"frames", s.frames},
 		{"seconds", s.seconds}, {"ms_per_frame", s.ms_per_frame}, {"path_length_m", s.path_length_m},
 		{"max_step_m", s.max_step_m}, {"trajectory", s.final_trajectory}, {"reader", s.reader_stats}};
-	for (const auto& [key, value] : s.figures) j[key] = value;
+	for (const auto& [key, value] : s.figures)
+	{
+		// A module's figures are doubles; whole numbers (counts) are written as integers, as readers expect.
+		if (std::isfinite(value) && std::fabs(value) < 9.0e15 && value == std::floor(value))
+			j[key] = static_cast<long long>(value);
+		else
+			j[key] = value;
+	}
 	AtomicOutputFile f(path);
 	f.stream() << j.dump(2) << "\n";
 	f.commit();

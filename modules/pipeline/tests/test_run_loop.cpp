@@ -311,10 +311,10 @@ TEST_F(RunLoop, AMetricVoNeedsNoScaleCorrection)
 
 TEST_F(RunLoop, BadModuleNamesAreInputErrors)
 {
-	EXPECT_NE(runError({"pipeline.lidar_odometry=nope"}).find("[pipeline] lidar_odometry: unknown module 'nope'"),
+	EXPECT_NE(runError({"pipeline.lidar_odometry=nope"}).find("--set pipeline.lidar_odometry=nope: unknown module 'nope'"),
 		std::string::npos);
 	EXPECT_NE(runError({"pipeline.motion_source=nope"}).find("known: metric_mono, visual"), std::string::npos);
-	EXPECT_NE(runError({"pipeline.scale_correction=nope"}).find("[pipeline] scale_correction: unknown module"),
+	EXPECT_NE(runError({"pipeline.scale_correction=nope"}).find("--set pipeline.scale_correction=nope: unknown module"),
 		std::string::npos);  // in mode lo too, which runs no scale correction
 	EXPECT_NE(runError({"pipeline.mode=vlo", "pipeline.visual_odometry=fake_stereo"}).find("'fake_stereo' is not a monocular VO"),
 		std::string::npos);

@@ -105,7 +105,10 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 			const double noisy = r + noise.range_sigma * rng.normal();
 			if (rng.uniform() < noise.dropout || noisy < model_.min_range || noisy > model_.max_range) continue;
 			const Eigen::Vector3d p = noisy * dL;
-			cloud.push_back({float(p.x()), float(p.y()), float(p.z()), static_cast<float>(gray / 255.0), float(tau), ringOf_[j]});
+			// A rolling sweep is written as a Velodyne scan, whose intensity is the sensor's 8-bit reflectivity:
+			// it carries the grey level itself (0-255), so that the rawlog and a KITTI export hold the same value.
+			const float intensity = distortion_ ? float(gray) : float(gray / 255.0);
+			cloud.push_back({float(p.x()), float(p.y()), float(p.z()), intensity, float(tau), ringOf_[j]});
 		}
 	}
 	return cloud;

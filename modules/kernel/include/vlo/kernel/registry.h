@@ -4,6 +4,7 @@
 // runs before main(). The file must be linked as an object (vlo_add_registered_module in CMake), or
 // the linker would drop it from a static library since nothing names it.
 #include <vlo/core/error.h>
+#include <vlo/core/option_table.h>
 
 #include <functional>
 #include <map>
@@ -40,7 +41,7 @@ class Registry
 	/// Throws InputError naming `where` when no module is registered under `name`.
 	void require(const std::string& name, const std::string& where) const
 	{
-		if (!factories_.count(name)) failInput(where, "unknown module '" + name + "' (known: " + names() + ")");
+		if (!factories_.count(name)) failInput(where, "unknown module '" + printable(name) + "' (known: " + names() + ")");
 	}
 
 	/// One new instance of every registered module, by name.

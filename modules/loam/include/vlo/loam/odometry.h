@@ -17,6 +17,7 @@
 
 #include <Eigen/Geometry>
 #include <string>
+#include <vector>
 
 namespace vlo::loam
 {
@@ -54,7 +55,7 @@ class ScanToScanOdometry
 		RingSearch rings;
 		PointKdTree tree;
 	};
-	int queryRing(const FeatureSet& curr, const ScanPoint& sp, const RingSearch::Query& q) const;
+	int queryRing(const FeatureSet& curr, const RingSearch::Query& q) const;
 	int firstNeighbour(const Set& s, const RingSearch::Query& q, int r) const;
 	int closestOnNearbyRings(const Set& s, int ring, const RingSearch::Query& q) const;
 
@@ -63,6 +64,9 @@ class ScanToScanOdometry
 	float max2_;
 	bool has_ref_ = false;
 	bool ref_rings_from_data_ = false;
+	/// With the sensor's ring ids: each ring's mean elevation slope z / rho in the reference (NaN if
+	/// empty), the beam table the data implies.
+	std::vector<float> ref_ring_slope_;
 	Set edges_, planes_;
 };
 }  // namespace vlo::loam

@@ -4,7 +4,8 @@
 // relative motion is solved for, alternating matching and solving.
 //
 // Neighbours: the first one is the closest reference point, searched on the rings within
-// nearby_rings of the query's elevation, or of its own ring when the scans carry ring ids (or, with use_kdtree, in a kd-tree over the whole scan as
+// nearby_rings of the query's elevation seen from the reference pose (with ring ids: the reference
+// ring of the nearest mean elevation) (or, with use_kdtree, in a kd-tree over the whole scan as
 // A-LOAM does: the same point in practice, but the tree costs milliseconds to build every frame);
 // the line's second point is the closest on a nearby ring, the plane's second the closest on the
 // first one's ring and its third the closest on a nearby ring.

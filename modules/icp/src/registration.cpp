@@ -1,5 +1,5 @@
 #include <vlo/icp/registration.h>
-#include <vlo/icp/se3_twist.h>
+#include <vlo/core/se3_twist.h>
 
 #include <Eigen/Cholesky>
 #include <cmath>

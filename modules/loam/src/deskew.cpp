@@ -1,5 +1,7 @@
 #include "vlo/loam/deskew.h"
 
+#include <vlo/core/se3_twist.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -20,14 +22,17 @@ void deskew(ScanPoints& points, const Eigen::Isometry3d& motion, double referenc
 	// Exact transforms at 1024 time steps over [lo, hi], the sweep [0, 1] widened to the points'
 	// times (the sensor's times may start before or end after it): nearest-step error is 1/2048 of
 	// the span's motion (< 1 mm at 1.5 m per sweep) for one trig evaluation per step, not per point.
+	// Constant twist, not A-LOAM's scaled angle and chord (scaleMotion): in a turn the sensor moves on
+	// an arc, and the chord puts both ends of the sweep off it to the same side.
 	constexpr int kSteps = 1024;
+	const Vector6d xi = logTwist(motion);
 	float lo = 0.0f, hi = 1.0f;
 	for (const ScanPoint& p : points) lo = std::min(lo, p.time), hi = std::max(hi, p.time);
 	std::array<Eigen::Matrix3f, kSteps + 1> R;
 	std::array<Eigen::Vector3f, kSteps + 1> t;
 	for (int k = 0; k <= kSteps; ++k)
 	{
-		const Eigen::Isometry3d T = scaleMotion(motion, lo + static_cast<double>(hi - lo) * k / kSteps - reference);
+		const Eigen::Isometry3d T = expTwist((lo + static_cast<double>(hi - lo) * k / kSteps - reference) * xi);
 		R[k] = T.linear().cast<float>();
 		t[k] = T.translation().cast<float>();
 	}

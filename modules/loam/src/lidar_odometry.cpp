@@ -1,6 +1,7 @@
 #include "vlo/loam/lidar_odometry.h"
 
 #include <vlo/core/se3.h>
+#include <vlo/core/se3_twist.h>
 #include <vlo/core/stopwatch.h>
 #include <vlo/loam/deskew.h>
 
@@ -145,7 +146,7 @@ LidarOdometryResult LidarOdometry::process(
 	const bool undistort = deskewable && frames_ && t_prev_ && t > *t_prev_;
 	const auto deskewed = [&](const FeatureSet& src, const Eigen::Isometry3d& motion) {
 		// The motion spans the time since the previous frame; deskewing needs one sweep's.
-		const Eigen::Isometry3d sweep = scaleMotion(motion, opt_.scan.scan_period / (t - *t_prev_));
+		const Eigen::Isometry3d sweep = expTwist(opt_.scan.scan_period / (t - *t_prev_) * logTwist(motion));
 		FeatureSet d = src;
 		for (ScanPoints* s : {&d.sharp, &d.less_sharp, &d.flat, &d.less_flat}) deskew(*s, sweep, opt_.scan.deskew_reference);
 		r.ms.deskew += lapMs(t0);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vlo::loam
 {
@@ -19,15 +20,39 @@ void ScanToScanOdometry::setReference(const FeatureSet& f)
 		if (opt_.use_kdtree) set->tree.build(set->points);
 	}
 	ref_rings_from_data_ = f.rings_from_data;
+	ref_ring_slope_.clear();
+	if (f.rings_from_data)
+	{
+		std::vector<double> sum(static_cast<std::size_t>(std::max(0, f.n_rings)), 0.0);
+		std::vector<int> count(sum.size(), 0);
+		for (const ScanPoints* pts : {&f.less_sharp, &f.less_flat})
+			for (const ScanPoint& p : *pts)
+				if (p.ring >= 0 && static_cast<std::size_t>(p.ring) < sum.size())
+				{
+					sum[p.ring] += p.p.z() / std::hypot(p.p.x(), p.p.y());
+					++count[p.ring];
+				}
+		for (std::size_t r = 0; r < sum.size(); ++r)
+			ref_ring_slope_.push_back(count[r] ? static_cast<float>(sum[r] / count[r]) : std::nanf(""));
+	}
 	has_ref_ = true;
 }
 
-// The ring whose neighbourhood holds the query's match: its own beam when both scans carry the
-// sensor's ring ids (the beam's elevation is unknown then), else the ring model's at its elevation.
-int ScanToScanOdometry::queryRing(const FeatureSet& curr, const ScanPoint& sp, const RingSearch::Query& q) const
+// The ring whose neighbourhood holds the query's match: the reference ring at the query's elevation
+// as seen from the reference pose. With the sensor's ring ids, the ring whose reference points have
+// the nearest mean elevation: not the query's own beam, since between two sweeps a point ahead
+// drops to a lower beam (at 1.2 m per sweep, a search from its own beam matched ground points a beam
+// too far and shortened every motion by ~0.05 %). Else the ring model's.
+int ScanToScanOdometry::queryRing(const FeatureSet& curr, const RingSearch::Query& q) const
 {
-	if (curr.rings_from_data && ref_rings_from_data_) return sp.ring;
-	return model_.nearestRing(q.p.z(), std::hypot(q.p.x(), q.p.y()));
+	const float rho = std::hypot(q.p.x(), q.p.y());
+	if (!(curr.rings_from_data && ref_rings_from_data_)) return model_.nearestRing(q.p.z(), rho);
+	const float slope = q.p.z() / rho;
+	int best = -1;
+	float gap = std::numeric_limits<float>::infinity();
+	for (std::size_t r = 0; r < ref_ring_slope_.size(); ++r)
+		if (std::fabs(ref_ring_slope_[r] - slope) < gap) gap = std::fabs(ref_ring_slope_[r] - slope), best = static_cast<int>(r);
+	return best;
 }
 
 // The closest reference point within max_match_distance, or -1; the search starts on `r`.
@@ -74,7 +99,7 @@ void ScanToScanOdometry::findMatches(const FeatureSet& curr, const Eigen::Isomet
 	for (const ScanPoint& sp : curr.sharp)
 	{
 		const RingSearch::Query q(R * sp.p + t);
-		const int j = firstNeighbour(edges_, q, queryRing(curr, sp, q));
+		const int j = firstNeighbour(edges_, q, queryRing(curr, q));
 		if (j < 0) continue;
 		const int l = closestOnNearbyRings(edges_, edges_.points[j].ring, q);
 		if (l < 0) continue;
@@ -88,7 +113,7 @@ void ScanToScanOdometry::findMatches(const FeatureSet& curr, const Eigen::Isomet
 	for (const ScanPoint& sp : curr.flat)
 	{
 		const RingSearch::Query q(R * sp.p + t);
-		const int j = firstNeighbour(planes_, q, queryRing(curr, sp, q));
+		const int j = firstNeighbour(planes_, q, queryRing(curr, q));
 		if (j < 0) continue;
 		float best = max2_;
 		const int l = planes_.rings.nearest(planes_.points[j].ring, q, best, j);

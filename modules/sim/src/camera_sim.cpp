@@ -1,9 +1,6 @@
 #include <vlo/sim/camera_sim.h>
+#include <vlo/sim/lens.h>
 #include <vlo/sim/rng.h>
-
-#include <opencv2/calib3d.hpp>
-#include <opencv2/core/eigen.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -13,36 +10,25 @@ namespace vlo::sim
 struct CameraSim::Lens
 {
 	PinholeCamera canvas;  // the pinhole picture rendered: K_ widened to every ray the lens sees
-	cv::Mat map_x, map_y;  // CV_32F, output size: where each distorted pixel looks in the canvas
+	LensMaps maps;  // where each distorted pixel looks in the canvas
 };
 
 CameraSim::CameraSim(const PinholeCamera& K, double zfar) : K_(K), zfar_(zfar)
 {
 	if (!K.distorted()) return;
 	// Each output pixel's ray through the lens, as a pixel of the pinhole camera with the same K.
-	std::vector<cv::Point2f> px;
-	px.reserve(static_cast<std::size_t>(K.width) * K.height);
-	for (int r = 0; r < K.height; ++r)
-		for (int c = 0; c < K.width; ++c) px.emplace_back(float(c), float(r));
-	cv::Mat Km;
-	cv::eigen2cv(K.K(), Km);
-	std::vector<cv::Point2f> rays;
-	const auto& d = K.dist;
-	if (K.distortion == mrpt::img::DistortionModel::kannala_brandt)
-		cv::fisheye::undistortPoints(px, rays, Km, cv::Vec4d(d[0], d[1], d[4], d[5]));
-	else
-		cv::undistortPoints(px, rays, Km, std::vector<double>(d.begin(), d.end()), cv::noArray(), cv::noArray(),
-			cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 50, 1e-9));
+	LensMaps maps = pinholeLookup(K);
 	// A real lens sees wider than its pinhole crop: render a canvas that holds every ray (at most one
 	// image size more on each side; rays beyond see black).
 	double x0 = 0, x1 = K.width - 1, y0 = 0, y1 = K.height - 1;
-	for (auto& p : rays)
-	{
-		p = cv::Point2f(float(K.fx * p.x + K.cx), float(K.fy * p.y + K.cy));
-		if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-		x0 = std::min<double>(x0, p.x), x1 = std::max<double>(x1, p.x);
-		y0 = std::min<double>(y0, p.y), y1 = std::max<double>(y1, p.y);
-	}
+	for (int r = 0; r < K.height; ++r)
+		for (int c = 0; c < K.width; ++c)
+		{
+			const float x = maps.x.at<float>(r, c), y = maps.y.at<float>(r, c);
+			if (!std::isfinite(x) || !std::isfinite(y)) continue;
+			x0 = std::min<double>(x0, x), x1 = std::max<double>(x1, x);
+			y0 = std::min<double>(y0, y), y1 = std::max<double>(y1, y);
+		}
 	const auto margin = [](double out, int size) { return int(std::ceil(std::min(out, double(size)))) + 1; };
 	const int left = margin(-x0, K.width), right = margin(x1 - (K.width - 1), K.width);
 	const int top = margin(-y0, K.height), bottom = margin(y1 - (K.height - 1), K.height);
@@ -52,14 +38,8 @@ CameraSim::CameraSim(const PinholeCamera& K, double zfar) : K_(K), zfar_(zfar)
 	lens_->canvas.dist.fill(0.0);
 	lens_->canvas.cx += left, lens_->canvas.cy += top;
 	lens_->canvas.width += left + right, lens_->canvas.height += top + bottom;
-	lens_->map_x.create(K.height, K.width, CV_32F);
-	lens_->map_y.create(K.height, K.width, CV_32F);
-	for (int r = 0, i = 0; r < K.height; ++r)
-		for (int c = 0; c < K.width; ++c, ++i)
-		{
-			lens_->map_x.at<float>(r, c) = rays[i].x + left;
-			lens_->map_y.at<float>(r, c) = rays[i].y + top;
-		}
+	maps.x += left, maps.y += top;
+	lens_->maps = maps;
 }
 
 CameraSim::~CameraSim() = default;
@@ -96,9 +76,7 @@ mrpt::img::CImage CameraSim::image(const RenderedView& t, double sigma, Rng& rng
 	}
 	if (lens_)  // rays leaving the canvas see black, as beyond a real lens's field
 	{
-		cv::Mat warped;
-		cv::remap(picture, warped, lens_->map_x, lens_->map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
-		picture = warped;
+		picture = throughLens(picture, lens_->maps);
 	}
 	mrpt::img::CImage img(K_.width, K_.height, mrpt::img::CH_GRAY);
 	for (int r = 0; r < K_.height; ++r)

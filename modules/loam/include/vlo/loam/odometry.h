@@ -4,7 +4,8 @@
 // relative motion is solved for, alternating matching and solving.
 //
 // Neighbours: the first one is the closest reference point, searched on the rings within
-// nearby_rings of the query's elevation, or of its own ring when the scans carry ring ids (or, with use_kdtree, in a kd-tree over the whole scan as
+// nearby_rings of the query's elevation seen from the reference pose (with ring ids: the reference
+// ring of the nearest mean elevation) (or, with use_kdtree, in a kd-tree over the whole scan as
 // A-LOAM does: the same point in practice, but the tree costs milliseconds to build every frame);
 // the line's second point is the closest on a nearby ring, the plane's second the closest on the
 // first one's ring and its third the closest on a nearby ring.
@@ -17,6 +18,7 @@
 
 #include <Eigen/Geometry>
 #include <string>
+#include <vector>
 
 namespace vlo::loam
 {
@@ -54,7 +56,7 @@ class ScanToScanOdometry
 		RingSearch rings;
 		PointKdTree tree;
 	};
-	int queryRing(const FeatureSet& curr, const ScanPoint& sp, const RingSearch::Query& q) const;
+	int queryRing(const FeatureSet& curr, const RingSearch::Query& q) const;
 	int firstNeighbour(const Set& s, const RingSearch::Query& q, int r) const;
 	int closestOnNearbyRings(const Set& s, int ring, const RingSearch::Query& q) const;
 
@@ -63,6 +65,9 @@ class ScanToScanOdometry
 	float max2_;
 	bool has_ref_ = false;
 	bool ref_rings_from_data_ = false;
+	/// With the sensor's ring ids: each ring's mean elevation slope z / rho in the reference (NaN if
+	/// empty), the beam table the data implies.
+	std::vector<float> ref_ring_slope_;
 	Set edges_, planes_;
 };
 }  // namespace vlo::loam

@@ -1,8 +1,8 @@
-#include <vlo/icp/se3_twist.h>
+#include <vlo/core/se3_twist.h>
 
 #include <cmath>
 
-namespace vlo::icp
+namespace vlo
 {
 namespace
 {
@@ -41,4 +41,4 @@ Vector6d logTwist(const Eigen::Isometry3d& T)
 	xi.head<3>() = leftJacobian(skew(phi), aa.angle()).inverse() * T.translation();
 	return xi;
 }
-}  // namespace vlo::icp
+}  // namespace vlo

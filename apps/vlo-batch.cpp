@@ -1,9 +1,8 @@
 // vlo-batch: runs an experiment plan (sequences x configurations) and tabulates it (doc/BATCH.md).
 #include <vlo/batch/batch.h>
 #include <vlo/core/app_main.h>
-#include <vlo/core/cli.h>
+#include <vlo/core/app_cli.h>
 #include <vlo/core/error.h>
-#include <vlo/core/log.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -13,7 +12,7 @@
 int main(int argc, char** argv)
 {
 	return vlo::runApp("vlo-batch", [&] {
-		const vlo::CommandLine cl(argc, argv, 1,
+		const auto parsed = vlo::parseAppCommandLine(argc, argv, 1,
 			{{"plan", "PLAN.ini", "experiment plan, e.g. ini/experiments/paper-table.ini"},
 				{"out", "DIR", "output folder: plan.ini, runs/, results.md, results.csv, snapshots/"},
 				{"data", "DIR", "folder of the plan's rawlogs (default: the plan's [plan] data)"},
@@ -21,20 +20,15 @@ int main(int argc, char** argv)
 				{"emit-jobs", "FILE", "write one shell line per run to FILE instead of running"},
 				{"emit-data", "FILE", "write one shell line per sequence to generate to FILE"},
 				{"collect", "DIR", "only build results.md/results.csv/snapshots from DIR's finished runs"},
-				{"bin", "DIR", "where vlo-sim, vlo-run and vlo-eval are (default: beside vlo-batch)"},
-				{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
-		if (cl.helpRequested())
-		{
-			std::cout << cl.usage(
-				"usage: vlo-batch --plan PLAN.ini --out DIR [--data DIR] [--jobs N]\n"
-				"       vlo-batch --plan PLAN.ini --out DIR [--data DIR] --emit-jobs FILE [--emit-data FILE]\n"
-				"       vlo-batch --collect DIR\n\n"
-				"Runs every sequence of the plan under every configuration (vlo-sim for missing sequences,\n"
-				"vlo-run, vlo-eval), or writes them as shell lines for GNU parallel or a Slurm array, and\n"
-				"tabulates the results in DIR/results.md and DIR/results.csv. See doc/BATCH.md.");
-			return 0;
-		}
-		vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
+				{"bin", "DIR", "where vlo-sim, vlo-run and vlo-eval are (default: beside vlo-batch)"}},
+			"usage: vlo-batch --plan PLAN.ini --out DIR [--data DIR] [--jobs N]\n"
+			"       vlo-batch --plan PLAN.ini --out DIR [--data DIR] --emit-jobs FILE [--emit-data FILE]\n"
+			"       vlo-batch --collect DIR\n\n"
+			"Runs every sequence of the plan under every configuration (vlo-sim for missing sequences,\n"
+			"vlo-run, vlo-eval), or writes them as shell lines for GNU parallel or a Slurm array, and\n"
+			"tabulates the results in DIR/results.md and DIR/results.csv. See doc/BATCH.md.");
+		if (!parsed) return 0;
+		const vlo::CommandLine& cl = *parsed;
 		if (cl.has("collect"))
 		{
 			for (const char* o : {"plan", "out", "data", "jobs", "emit-jobs", "emit-data", "bin"})

@@ -1,6 +1,6 @@
 // vlo-eval: scores an estimated trajectory against ground truth (KITTI odometry metric, ATE/ARE, RPE).
 #include <vlo/core/app_main.h>
-#include <vlo/core/cli.h>
+#include <vlo/core/app_cli.h>
 #include <vlo/core/error.h>
 #include <vlo/core/log.h>
 #include <vlo/eval/camera_frame.h>
@@ -32,7 +32,7 @@ std::vector<double> parseLengths(const std::string& s)
 
 int run(int argc, char** argv)
 {
-	CommandLine cl(argc, argv, 1,
+	const auto parsed = vlo::parseAppCommandLine(argc, argv, 1,
 		{{"gt", "GT.tum", "ground truth (TUM, vehicle frame)", true},
 			{"est", "EST.tum", "estimated trajectory (TUM, vehicle frame)", true},
 			{"metric", "kitti|ate|rpe|all", "metrics to compute (default all)"},
@@ -44,17 +44,13 @@ int run(int argc, char** argv)
 			{"kitti-calib", "calib.txt", "rig from the Tr line of a KITTI calib.txt: KITTI metric in camera 0"},
 			{"kitti-lengths", "L1,L2,..", "KITTI segment lengths, m (default 100,200,...,800)"},
 			{"kitti-step", "N", "KITTI first frames every N matched frames (default 10)"},
-			{"write-aligned", "OUT.tum", "write the aligned, matched estimate (TUM)"},
-			{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
-	if (cl.helpRequested())
-	{
-		std::cout << cl.usage("vlo-eval --gt GT.tum --est EST.tum [options]\n\n"
-								"Scores an estimated trajectory against ground truth: the KITTI odometry metric and\n"
-								"ATE/ARE after Umeyama alignment, and the frame-to-frame relative pose error. See\n"
-								"doc/EVALUATION.md.");
-		return 0;
-	}
-	vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
+			{"write-aligned", "OUT.tum", "write the aligned, matched estimate (TUM)"}},
+		"vlo-eval --gt GT.tum --est EST.tum [options]\n\n"
+		"Scores an estimated trajectory against ground truth: the KITTI odometry metric and\n"
+		"ATE/ARE after Umeyama alignment, and the frame-to-frame relative pose error. See\n"
+		"doc/EVALUATION.md.");
+	if (!parsed) return 0;
+	const vlo::CommandLine& cl = *parsed;
 	EvalOptions opts;
 	opts.gt_name = cl.get("gt");
 	opts.est_name = cl.get("est");

@@ -1,6 +1,6 @@
 // vlo-import: converts datasets into vlo rawlogs (observation-only, CAMERA + LIDAR).
 #include <vlo/core/app_main.h>
-#include <vlo/core/cli.h>
+#include <vlo/core/app_cli.h>
 #include <vlo/core/error.h>
 #include <vlo/core/log.h>
 #include <vlo/io/kitti_import.h>
@@ -33,23 +33,19 @@ void report(const vlo::ImportSummary& s)
 
 int kittiOdometry(int argc, char** argv)
 {
-	const vlo::CommandLine cl(argc, argv, 2,
+	const auto parsed = vlo::parseAppCommandLine(argc, argv, 2,
 		{{"root", "DIR", "dataset root holding sequences/ and poses/", true},
 			{"seq", "NN", "sequence number as in the folder name, e.g. 06", true},
 			{"out", "FILE.rawlog", "output rawlog; ground truth goes to FILE.gt.tum", true},
 			{"first", "I", "first frame (default 0)"}, {"last", "J", "last frame, inclusive (default: the last)"},
 			{"camera", "X", "camera 0..3: image_X with PX (default 0; 2 = left colour, stored grayscale)"},
 			{"camera-label", "L", "sensor label of the images (default CAMERA)"},
-			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"},
-			{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
-	if (cl.helpRequested())
-	{
-		std::cout << cl.usage("Usage: vlo-import kitti-odometry --root ROOT --seq NN --out FILE.rawlog [options]\n"
-							  "Camera X (image_X, PX) + Velodyne; vehicle frame = Velodyne frame. Without velodyne/ or\n"
-							  "without Tr in calib.txt the rawlog is camera-only (with a warning).");
-		return 0;
-	}
-	vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
+			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}},
+		"Usage: vlo-import kitti-odometry --root ROOT --seq NN --out FILE.rawlog [options]\n"
+		"Camera X (image_X, PX) + Velodyne; vehicle frame = Velodyne frame. Without velodyne/ or\n"
+		"without Tr in calib.txt the rawlog is camera-only (with a warning).");
+	if (!parsed) return 0;
+	const vlo::CommandLine& cl = *parsed;
 	vlo::KittiOdometryImport opt;
 	opt.root = cl.get("root");
 	opt.seq = cl.get("seq");
@@ -65,22 +61,18 @@ int kittiOdometry(int argc, char** argv)
 
 int kittiRaw(int argc, char** argv)
 {
-	const vlo::CommandLine cl(argc, argv, 2,
+	const auto parsed = vlo::parseAppCommandLine(argc, argv, 2,
 		{{"drive", "DIR", "drive folder holding image_0X/data and velodyne_points/data", true},
 			{"calib", "DIR", "folder holding calib_cam_to_cam.txt and calib_velo_to_cam.txt", true},
 			{"out", "FILE.rawlog", "output rawlog", true},
 			{"camera", "X", "camera 0..3 (default 2; colour images are stored grayscale)"},
 			{"camera-label", "L", "sensor label of the images (default CAMERA)"},
-			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"},
-			{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
-	if (cl.helpRequested())
-	{
-		std::cout << cl.usage("Usage: vlo-import kitti-raw --drive DIR --calib DIR --out FILE.rawlog [options]\n"
-							  "Rectified camera X + Velodyne; projection P_rect_0X * R_rect_00 * Tr_velo_to_cam.\n"
-							  "Times from image_0X/timestamps.txt and velodyne_points/timestamps.txt, else 10 Hz from 0.");
-		return 0;
-	}
-	vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
+			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}},
+		"Usage: vlo-import kitti-raw --drive DIR --calib DIR --out FILE.rawlog [options]\n"
+		"Rectified camera X + Velodyne; projection P_rect_0X * R_rect_00 * Tr_velo_to_cam.\n"
+		"Times from image_0X/timestamps.txt and velodyne_points/timestamps.txt, else 10 Hz from 0.");
+	if (!parsed) return 0;
+	const vlo::CommandLine& cl = *parsed;
 	vlo::KittiRawImport opt;
 	opt.drive = cl.get("drive");
 	opt.calib = cl.get("calib");
@@ -93,7 +85,7 @@ int kittiRaw(int argc, char** argv)
 }
 int rosbag(int argc, char** argv)
 {
-	const vlo::CommandLine cl(argc, argv, 2,
+	const auto parsed = vlo::parseAppCommandLine(argc, argv, 2,
 		{{"bag", "FILE.bag", "input bag (repeat for a recording split into several bags)", true, true},
 			{"list", "", "print every topic with its type, message count and rate, and stop"},
 			{"lidar-topic", "TOPIC", "sensor_msgs/PointCloud2 topic"},
@@ -105,18 +97,13 @@ int rosbag(int argc, char** argv)
 			{"vehicle-frame", "FRAME", "tf frame to use as vehicle frame (default: the LiDAR's frame)"},
 			{"reorder-window", "S", "seconds of header stamps held to sort messages (default 1)"},
 			{"out", "FILE.rawlog", "output rawlog"}, {"camera-label", "L", "sensor label of the images (default CAMERA)"},
-			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"},
-			{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
-	if (cl.helpRequested())
-	{
-		std::cout << cl.usage(
-			"Usage: vlo-import rosbag --bag FILE.bag [--bag MORE.bag ...] --list\n"
-			"       vlo-import rosbag --bag FILE.bag [--bag ...] --lidar-topic TOPIC --image-topic TOPIC\n"
-			"                         [--camera-info-topic TOPIC] [--extrinsics FILE.yaml] [--gt-topic TOPIC] --out FILE.rawlog\n"
-			"Messages are written in header-stamp order with their own stamps; see doc/ROSBAG.md.");
-		return 0;
-	}
-	vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
+			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}},
+		"Usage: vlo-import rosbag --bag FILE.bag [--bag MORE.bag ...] --list\n"
+		"       vlo-import rosbag --bag FILE.bag [--bag ...] --lidar-topic TOPIC --image-topic TOPIC\n"
+		"                         [--camera-info-topic TOPIC] [--extrinsics FILE.yaml] [--gt-topic TOPIC] --out FILE.rawlog\n"
+		"Messages are written in header-stamp order with their own stamps; see doc/ROSBAG.md.");
+	if (!parsed) return 0;
+	const vlo::CommandLine& cl = *parsed;
 	if (cl.has("list"))
 	{
 		vlo::listRosbagTopics(cl.getAll("bag"), std::cout);

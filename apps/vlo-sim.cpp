@@ -1,6 +1,6 @@
 // vlo-sim: simulated camera + LiDAR drives with ground truth (see doc/SIMULATOR.md).
 #include <vlo/core/app_main.h>
-#include <vlo/core/cli.h>
+#include <vlo/core/app_cli.h>
 #include <vlo/core/error.h>
 #include <vlo/core/log.h>
 #include <vlo/sim/sequence_writer.h>
@@ -12,7 +12,7 @@
 int main(int argc, char** argv)
 {
 	return vlo::runApp("vlo-sim", [&] {
-		vlo::CommandLine cl(argc, argv, 1,
+		const auto parsed = vlo::parseAppCommandLine(argc, argv, 1,
 			{{"scenario", "NAME", "urban | trees | corridor (default urban)"},
 				{"lidar", "MODEL", "hdl64 | vlp16 (default hdl64)"},
 				{"frames", "N", "number of 10 Hz frames (default 100)"},
@@ -25,15 +25,12 @@ int main(int argc, char** argv)
 				{"fisheye", "", "with --camera-distortion K1,K2,K3,K4: an equidistant (fisheye) lens instead"},
 				{"no-noise", "", "no image noise, range noise or dropouts (for checks)"},
 				{"foliage-depth", "M", "mean depth of LiDAR returns inside tree crowns and bushes (default 0: solid hulls)"},
-				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
-				{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
-		if (cl.helpRequested())
-		{
-			std::cout << cl.usage("vlo-sim --out FILE.rawlog [options]\n\n"
-								  "Renders a seeded procedural drive headless: a grayscale camera (KITTI intrinsics) and a\n"
-								  "spinning LiDAR, 10 Hz, with ground truth in FILE.gt.tum (vehicle frame, relative to frame 0).");
-			return 0;
-		}
+				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"}},
+			"vlo-sim --out FILE.rawlog [options]\n\n"
+			  "Renders a seeded procedural drive headless: a grayscale camera (KITTI intrinsics) and a\n"
+			  "spinning LiDAR, 10 Hz, with ground truth in FILE.gt.tum (vehicle frame, relative to frame 0).");
+		if (!parsed) return 0;
+		const vlo::CommandLine& cl = *parsed;
 		vlo::sim::SimConfig cfg;
 		cfg.scenario = vlo::sim::parseScenario(cl.get("scenario", "urban"));
 		cfg.lidar = vlo::sim::lidarByName(cl.get("lidar", "hdl64"));
@@ -62,7 +59,6 @@ int main(int argc, char** argv)
 			cfg.blackout_first = first;
 			cfg.blackout_end = end;
 		}
-		vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
 
 		std::string cmd = "vlo-sim";
 		for (int i = 1; i < argc; ++i) cmd += std::string(" ") + argv[i];

@@ -2,7 +2,7 @@
 // trajectories (against ground truth), a 3D view of a point-cloud map, camera frames with the LiDAR
 // scan projected. See doc/SNAPSHOTS.md.
 #include <vlo/core/app_main.h>
-#include <vlo/core/cli.h>
+#include <vlo/core/app_cli.h>
 #include <vlo/core/error.h>
 #include <vlo/core/log.h>
 #include <vlo/io/pcd.h>
@@ -77,7 +77,7 @@ void projectedFrames(
 
 int run(int argc, char** argv)
 {
-	CommandLine cl(argc, argv, 1,
+	const auto parsed = vlo::parseAppCommandLine(argc, argv, 1,
 		{{"traj", "A.tum", "estimated trajectory (TUM, vehicle frame of frame 0)", false, true},
 			{"name", "NAME", "legend name of the matching --traj, in order (default: file name)", false, true},
 			{"gt", "GT.tum", "ground truth (TUM), drawn in grey"},
@@ -85,18 +85,14 @@ int run(int argc, char** argv)
 			{"rawlog", "R.rawlog", "rawlog with CAMERA and LIDAR observations"},
 			{"frame", "K", "frame index in --rawlog to draw with the projected scan (default 0)", false, true},
 			{"title", "TEXT", "title above the top-down and 3D views"},
-			{"out", "DIR", "output folder (created if missing)", true},
-			{"verbose", "", "debug messages too"}, {"quiet", "", "errors and the final line only"}});
-	if (cl.helpRequested())
-	{
-		std::cout << cl.usage("vlo-snapshot --traj A.tum [--traj B.tum ...] [--name A ...] [--gt GT.tum]\n"
-							  "             [--map map.pcd] [--rawlog R.rawlog --frame K ...] --out DIR\n\n"
-							  "Writes DIR/topdown.png (trajectories, from above), DIR/map3d.png (map with\n"
-							  "trajectories, oblique) and DIR/frame_K.png (image with the LiDAR scan projected).\n"
-							  "Headless: no display is needed. See doc/SNAPSHOTS.md.");
-		return 0;
-	}
-	vlo::setVerbosity(cl.has("verbose"), cl.has("quiet"));
+			{"out", "DIR", "output folder (created if missing)", true}},
+		"vlo-snapshot --traj A.tum [--traj B.tum ...] [--name A ...] [--gt GT.tum]\n"
+		  "             [--map map.pcd] [--rawlog R.rawlog --frame K ...] --out DIR\n\n"
+		  "Writes DIR/topdown.png (trajectories, from above), DIR/map3d.png (map with\n"
+		  "trajectories, oblique) and DIR/frame_K.png (image with the LiDAR scan projected).\n"
+		  "Headless: no display is needed. See doc/SNAPSHOTS.md.");
+	if (!parsed) return 0;
+	const vlo::CommandLine& cl = *parsed;
 	const auto trajFiles = cl.getAll("traj"), names = cl.getAll("name");
 	if (names.size() > trajFiles.size())
 		failInput("--name",

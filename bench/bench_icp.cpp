@@ -43,21 +43,19 @@ void runFrames(benchmark::State& state, MakeOdometry make, Process process)
 void BM_IcpFrame(benchmark::State& state, bool hdl)
 {
 	const auto& s = scans(hdl);
-	double pre = 0, reg = 0, upd = 0, iterations = 0;
+	double features = 0, mapping = 0, iterations = 0;
 	int n = 0;
 	runFrames<icp::IcpOdometry>(
 		state, [] { return std::make_unique<icp::IcpOdometry>(icp::IcpOptions{}); },
 		[&](icp::IcpOdometry& odo, int i) {
 			const icp::IcpResult r = odo.process(0.1 * i, s[i], std::nullopt);
-			pre += r.ms_preprocess;
-			reg += r.ms_registration;
-			upd += r.ms_map_update;
+			features += r.ms.ms("features");
+			mapping += r.ms.ms("mapping");
 			iterations += r.registration.iterations;
 			++n;
 		});
-	state.counters["ms_preprocess"] = pre / n;
-	state.counters["ms_registration"] = reg / n;
-	state.counters["ms_map_update"] = upd / n;
+	state.counters["ms_features"] = features / n;
+	state.counters["ms_mapping"] = mapping / n;
 	state.counters["iterations"] = iterations / n;
 }
 

@@ -136,14 +136,14 @@ void runSequence(benchmark::State& state, const Sequence& seq, const char* detec
 		for (std::size_t k = 0; k < seq.images.size(); ++k)
 		{
 			const VoFrameInfo i = vo.process(seq.images[k], seq.times[k]);
-			extract += i.ms_extract;
-			track += i.ms_track;
+			extract += i.ms.ms("extract");
+			track += i.ms.ms("track");
 			++frames;
 			tracked += i.pose.has_value();
 			if (i.keyframe && !i.new_map)
 			{
-				mapping += i.ms_mapping;
-				mapping_max = std::max(mapping_max, i.ms_mapping);
+				mapping += i.ms.ms("mapping");
+				mapping_max = std::max(mapping_max, i.ms.ms("mapping"));
 				++kfs;
 			}
 		}

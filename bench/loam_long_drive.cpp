@@ -53,8 +53,8 @@ bool drive(bool hdl)
 		if (i == 0) continue;
 		bad += r.status != FrameStatus::Ok;
 		degenerate += r.mapping.degeneracy.degenerate;
-		ms += r.ms.total / (n - 1);
-		ms_max = std::max(ms_max, r.ms.total);
+		ms += r.ms.total() / (n - 1);
+		ms_max = std::max(ms_max, r.ms.total());
 	}
 	// KITTI odometry metric: mean relative translation error over 100..800 m segments.
 	double terr = 0, rerr = 0;

@@ -32,8 +32,7 @@ class IcpModule : public LidarOdometryModule
 		table.set("lo_icp_sigma_m", r.sigma, 4);
 		table.set("lo_icp_model_error_m", r.model_error, 4);
 		table.set("lo_map_points", static_cast<long long>(r.map_points));
-		table.set("ms_lo_features", r.ms_preprocess, 2);
-		table.set("ms_lo_mapping", r.ms_registration + r.ms_map_update, 2);
+		table.setTimes("lo_", r.ms);
 		table.set("lo_reason", r.reason);
 		return mount_.vehiclePose(r.pose);
 	}

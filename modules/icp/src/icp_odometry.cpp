@@ -64,7 +64,7 @@ IcpResult IcpOdometry::process(double t, const PointCloud& scan, const std::opti
 	const Points source = voxelDownsample(frame, 1.5 * opt_.voxel_size);
 	r.n_valid = frame.size();
 	r.n_source = source.size();
-	r.ms_preprocess = lapMs(clock);
+	r.ms.add("features", lapMs(clock));
 
 	r.sigma = threshold_.sigma();
 	r.pose = predicted;
@@ -91,7 +91,7 @@ IcpResult IcpOdometry::process(double t, const PointCloud& scan, const std::opti
 			r.pose = r.registration.pose;
 		}
 	}
-	r.ms_registration = lapMs(clock);
+	r.ms.add("mapping", lapMs(clock));
 
 	if (r.status != FrameStatus::Skipped)
 	{
@@ -106,7 +106,7 @@ IcpResult IcpOdometry::process(double t, const PointCloud& scan, const std::opti
 	last_t_ = t;
 	started_ = started_ || r.status != FrameStatus::Skipped;
 	r.map_points = map_.pointCount();
-	r.ms_map_update = lapMs(clock);
+	r.ms.add("mapping", lapMs(clock));
 	return r;
 }
 }  // namespace vlo::icp

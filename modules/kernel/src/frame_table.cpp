@@ -52,6 +52,11 @@ void FrameTable::set(const std::string& column, double value, int decimals)
 
 void FrameTable::set(const std::string& column, long long value) { set(column, std::to_string(value)); }
 
+void FrameTable::setTimes(const std::string& prefix, const StageTimes& times)
+{
+	for (const auto& [stage, ms] : times.stages()) set("ms_" + prefix + stage, ms, 2);
+}
+
 std::vector<std::string> FrameTable::columns() const
 {
 	static const std::vector<std::string> leading{"frame", "t", "x", "y", "z"};

@@ -54,6 +54,19 @@ TEST(FrameTable, DocumentedColumnOrderWhateverTheOrderOfWriting)
 							   "scale_s", "ms_vo_track", "ms_lo_mapping", "ms_scale", "ms_total"}));
 }
 
+// An estimator's StageTimes become one column per stage, in its declared order, whatever ran first.
+TEST(FrameTable, SetTimesWritesOneColumnPerStage)
+{
+	StageTimes ms({"features", "odometry", "mapping"});
+	ms.add("mapping", 1.234);
+	ms.add("features", 2.0);
+	FrameTable t;
+	t.setTimes("lo_", ms);
+	EXPECT_EQ(t.columns(), (std::vector<std::string>{"ms_lo_features", "ms_lo_odometry", "ms_lo_mapping"}));
+	EXPECT_EQ(t.cell(0, "ms_lo_mapping"), "1.23");
+	EXPECT_EQ(t.cell(0, "ms_lo_odometry"), "0.00");
+}
+
 TEST(FrameTable, NoNegativeZero)
 {
 	FrameTable t;

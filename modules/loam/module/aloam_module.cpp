@@ -41,9 +41,7 @@ class AloamModule : public LidarOdometryModule
 		table.set("lo_degenerate", r.mapping.degeneracy.degenerate);
 		table.set("lo_map_matches", static_cast<long long>(r.mapping.n_edges + r.mapping.n_planes));
 		table.set("lo_map_points", static_cast<long long>(r.map_edge_points + r.map_plane_points));
-		table.set("ms_lo_features", r.ms.preprocess + r.ms.features, 2);
-		table.set("ms_lo_odometry", r.ms.deskew + r.ms.odometry, 2);
-		table.set("ms_lo_mapping", r.ms.mapping + r.ms.map_update, 2);
+		table.setTimes("lo_", r.ms);
 		table.set("lo_reason", r.reason);
 		return mount_.vehiclePose(r.pose);
 	}

@@ -87,7 +87,7 @@ void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, E
 		r.odometry = odometry_.match(f, odom_ref_.inverse() * odom);
 		odom = odom_ref_ * r.odometry.T_prev_curr;
 	}
-	r.ms.odometry += lapMs(t0);
+	r.ms.add("odometry", lapMs(t0));
 
 	// Scan-to-map from the odometry pose carried into the map frame.
 	pose = map_T_odom_ * odom;
@@ -102,7 +102,7 @@ void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, E
 	}
 	else if (!first && opt_.odometry.enabled && !r.odometry.ok)
 		r.status = FrameStatus::Degraded, r.reason = r.odometry.reason;
-	r.ms.mapping += lapMs(t0);
+	r.ms.add("mapping", lapMs(t0));
 }
 
 LidarOdometryResult LidarOdometry::process(
@@ -110,8 +110,7 @@ LidarOdometryResult LidarOdometry::process(
 {
 	LidarOdometryResult r;
 	r.t = t;
-	const auto start = SteadyClock::now();
-	auto t0 = start;
+	auto t0 = SteadyClock::now();
 	r.guess = frames_ ? prior_->predict(t, prior_motion) : Eigen::Isometry3d::Identity();
 	r.prior_source = frames_ ? prior_->lastSource() : "none";
 
@@ -119,7 +118,7 @@ LidarOdometryResult LidarOdometry::process(
 	r.n_input = scan.size();
 	r.n_valid = rs.points.size();
 	r.n_rings = rs.populatedRings(1);
-	r.ms.preprocess = lapMs(t0);
+	r.ms.add("features", lapMs(t0));
 	if (rs.points.empty())
 		return skip(r, "no usable points (" + std::to_string(scan.size()) + " given: " + std::to_string(rs.n_invalid) +
 				" invalid, " + std::to_string(rs.n_out_of_range) + " out of range, " + std::to_string(rs.n_out_of_fov) +
@@ -133,7 +132,7 @@ LidarOdometryResult LidarOdometry::process(
 	r.n_less_sharp = raw.less_sharp.size();
 	r.n_flat = raw.flat.size();
 	r.n_less_flat = raw.less_flat.size();
-	r.ms.features = lapMs(t0);
+	r.ms.add("features", lapMs(t0));
 	if (static_cast<int>(raw.sharp.size()) < opt_.features.min_sharp || static_cast<int>(raw.flat.size()) < opt_.features.min_flat)
 		return skip(r, "too few features (" + std::to_string(raw.sharp.size()) + " sharp, " + std::to_string(raw.flat.size()) + " flat)");
 
@@ -149,7 +148,7 @@ LidarOdometryResult LidarOdometry::process(
 		const Eigen::Isometry3d sweep = expTwist(opt_.scan.scan_period / (t - *t_prev_) * logTwist(motion));
 		FeatureSet d = src;
 		for (ScanPoints* s : {&d.sharp, &d.less_sharp, &d.flat, &d.less_flat}) deskew(*s, sweep, opt_.scan.deskew_reference);
-		r.ms.deskew += lapMs(t0);
+		r.ms.add("odometry", lapMs(t0));
 		return d;
 	};
 	// The first sweep had no motion to be deskewed with: the second brings one (constant velocity),
@@ -176,13 +175,13 @@ LidarOdometryResult LidarOdometry::process(
 	if (opt_.mapping.enabled) mapper_.insert(f, pose);
 	r.map_edge_points = mapper_.edgeMap().numPoints();
 	r.map_plane_points = mapper_.planeMap().numPoints();
-	r.ms.map_update = lapMs(t0);
+	r.ms.add("mapping", lapMs(t0));
 
 	map_T_odom_ = pose * odom.inverse();
 	odom_pose_ = odom_ref_ = odom;
 	t0 = SteadyClock::now();
 	if (opt_.odometry.enabled) odometry_.setReference(f);  // builds the search index: odometry time
-	r.ms.odometry += lapMs(t0);
+	r.ms.add("odometry", lapMs(t0));
 	r.motion = frames_ ? pose_.inverse() * pose : Eigen::Isometry3d::Identity();
 	r.pose = pose;
 	prior_->update(t, r.motion);
@@ -191,7 +190,6 @@ LidarOdometryResult LidarOdometry::process(
 	if (frames_ == 0 && deskewable) first_raw_ = f;  // f is raw: the first frame is not deskewed
 	else first_raw_.reset();
 	++frames_;
-	r.ms.total = msSince(start);
 	return r;
 }
 }  // namespace vlo::loam

@@ -50,16 +50,16 @@ DriveStats drive(const LidarModel& lidar, const LoamOptions& opt, const Path& pa
 		st.max_trans_err = std::max(st.max_trans_err, et);
 		st.max_rot_err_deg = std::max(st.max_rot_err_deg, er);
 		st.final_trans_err = et;
-		if (i > 0) st.mean_ms += r.ms.total / (frames - 1), st.max_ms = std::max(st.max_ms, r.ms.total);
+		if (i > 0) st.mean_ms += r.ms.total() / (frames - 1), st.max_ms = std::max(st.max_ms, r.ms.total());
 		if (r.status != FrameStatus::Ok && i > 0) ++st.not_ok;
 		if (verbose)
 			std::printf("%3d %-12s et %.3f er %.3f (rpy %.3f %.3f %.3f) | pts %zu sharp %zu flat %zu lf %zu | odo %d/%d it %d rms %.3f | map "
-						"%d/%d it %d rms %.3f mineig %.0f | ms pre %.1f feat %.1f odo %.1f map %.1f upd %.1f tot %.1f | "
+						"%d/%d it %d rms %.3f mineig %.0f | ms feat %.1f odo %.1f map %.1f tot %.1f | "
 						"map %zu+%zu %s\n",
 				i, toString(r.status), et, er, dr.x(), dr.y(), dr.z(), r.n_valid, r.n_sharp, r.n_flat, r.n_less_flat, r.odometry.n_edges,
 				r.odometry.n_planes, r.odometry.iterations, r.odometry.rms, r.mapping.n_edges, r.mapping.n_planes,
-				r.mapping.iterations, r.mapping.rms, r.mapping.degeneracy.min_eigenvalue, r.ms.preprocess, r.ms.features,
-				r.ms.odometry, r.ms.mapping, r.ms.map_update, r.ms.total, r.map_edge_points, r.map_plane_points,
+				r.mapping.iterations, r.mapping.rms, r.mapping.degeneracy.min_eigenvalue, r.ms.ms("features"),
+				r.ms.ms("odometry"), r.ms.ms("mapping"), r.ms.total(), r.map_edge_points, r.map_plane_points,
 				r.reason.c_str());
 	}
 	st.length = step * (frames - 1);

@@ -158,11 +158,12 @@ RunSummary runPipeline(const RunRequest& req)
 	summary.seconds = loopSeconds;
 	summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;
 	summary.reader_stats = reader.statsSummary();
+	summary.stage_timings = stageTimings(outputs.table);
 	writeSummaryJson(req.out + "/summary.json", summary, req);
 	folder.recordWritten();
 	logger().logStr(mrpt::system::LVL_DEBUG, summary.reader_stats);
 	logger().logStr(mrpt::system::LVL_INFO, "time per stage over " + std::to_string(summary.frames) + " frames (frames.csv):\n" +
-			formatStageTimings(stageTimings(outputs.table)));
+			formatStageTimings(summary.stage_timings));
 	return summary;
 }
 }  // namespace vlo

@@ -124,6 +124,10 @@ void writeSummaryJson(const std::string& path, const RunSummary& s, const RunReq
 		else
 			j[key] = value;
 	}
+	j["stage_timings"] = nlohmann::ordered_json::array();
+	for (const auto& t : s.stage_timings)
+		j["stage_timings"].push_back(
+			{{"stage", t.stage}, {"mean_ms", t.mean}, {"p95_ms", t.p95}, {"max_ms", t.max}, {"frames", t.count}});
 	AtomicOutputFile f(path);
 	f.stream() << j.dump(2) << "\n";
 	f.commit();

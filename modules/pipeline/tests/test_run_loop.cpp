@@ -10,6 +10,8 @@
 #include <vlo/kernel/visual_odometry.h>
 #include <vlo/pipeline/run.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -283,6 +285,17 @@ TEST_F(RunLoop, ModeLoRunsNoVisualOdometryAndModeVoNoLidarOdometry)
 	EXPECT_EQ(lo.final_trajectory, "trajectory_lo.tum");
 	EXPECT_FALSE(std::filesystem::exists(out("trajectory_vo.tum")));
 	EXPECT_EQ(header(out("frames.csv")), (std::vector<std::string>{"frame", "t", "x", "y", "z", "lo_fake", "ms_total"}));
+	// summary.json carries the end-of-run timing table: one entry per ms_* column, here ms_total of every frame.
+	std::ifstream summaryFile(out("summary.json"));
+	const auto summary = nlohmann::json::parse(summaryFile);
+	ASSERT_EQ(summary["stage_timings"].size(), 1u);
+	const auto& total = summary["stage_timings"][0];
+	EXPECT_EQ(total["stage"], "ms_total");
+	EXPECT_EQ(total["frames"], kFrames);
+	ASSERT_EQ(lo.stage_timings.size(), 1u);
+	EXPECT_DOUBLE_EQ(total["mean_ms"].get<double>(), lo.stage_timings[0].mean);
+	EXPECT_LE(total["mean_ms"].get<double>(), total["max_ms"].get<double>());
+	EXPECT_LE(total["p95_ms"].get<double>(), total["max_ms"].get<double>());
 
 	seen = {};
 	std::filesystem::remove_all(out(""));

@@ -132,7 +132,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		table.set("scale_decision", decision);
 		table.set("scale_applied", applied.factor, 4);
 		table.set("scale_cumulative", policy_->cumulative(), 4);
-		table.set("ms_scale", e.ms.total, 2);
+		table.set("ms_scale", e.ms.total(), 2);
 	}
 
 	scale::ScaleOptions opt_;

@@ -41,7 +41,7 @@ void check(const char* what, const SimPair& p, const ScaleOptions& opt)
 		std::printf("%s k %.1f: %s s*k %.4f spread %.4f | projected %d selected %d tracked %d epipolar %d "
 					"gradient %d triangulated %d inliers %d | %.1f ms\n",
 			what, k, toString(e.reason), e.scale * k, e.spread * k, c.projected, c.selected, c.tracked,
-			c.epipolar_kept, c.gradient_kept, c.triangulated, c.inliers, e.ms.total);
+			c.epipolar_kept, c.gradient_kept, c.triangulated, c.inliers, e.ms.total());
 		ASSERT_TRUE(e.valid) << toString(e.reason);
 		EXPECT_NEAR(e.scale * k, 1.0, 0.01);
 	}

@@ -49,13 +49,11 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 	const PinholeCamera& cam, const Eigen::Isometry3d& camera_T_lidar, const Eigen::Isometry3d& cur_T_prev) const
 {
 	if (!cam.valid()) failInput("scale corrector", "invalid camera intrinsics");
-	const auto start = SteadyClock::now();
-	auto t0 = start;
+	auto t0 = SteadyClock::now();
 	ScaleEstimate e;
 	auto finish = [&](Reason r) {
 		e.reason = r;
 		e.valid = r == Reason::Ok;
-		e.ms.total = msSince(start);
 		return e;
 	};
 	const cv::Mat prev = toGrey(prevIn, cam, "C(i-1)"), cur = toGrey(curIn, cam, "C(i)");
@@ -65,7 +63,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 	// Eq. 1: project L(i-1) into C(i-1).
 	const auto projected = projectScan(prevScan, cam, camera_T_lidar, opt_.min_depth, opt_.max_depth, opt_.border);
 	e.counts.projected = static_cast<int>(projected.size());
-	e.ms.project = lapMs(t0);
+	e.ms.add("project", lapMs(t0));
 	if (projected.size() < minN) return finish(Reason::FewProjected);
 
 	// Corner + gradient tests, NMS.
@@ -84,7 +82,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 		e.keypoints.push_back(d);
 		pts.push_back(p.px);
 	}
-	e.ms.select = lapMs(t0);
+	e.ms.add("select", lapMs(t0));
 	if (keypoints.size() < minN) return finish(Reason::FewKeypoints);
 	if (cur_T_prev.translation().squaredNorm() == 0) return finish(Reason::DegenerateMotion);
 
@@ -104,7 +102,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 		if (tracks[i].status != TrackStatus::Ok) d.rejected_by = Stage::Tracking;
 		else ++e.counts.tracked;
 	}
-	e.ms.track = lapMs(t0);
+	e.ms.add("track", lapMs(t0));
 	if (static_cast<size_t>(e.counts.tracked) < minN) return finish(Reason::FewTracks);
 
 	// Culling: eqs. 2-4.
@@ -118,7 +116,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 		e.counts.epipolar_kept += c.rejected_by != Stage::Epipolar;
 		e.counts.gradient_kept += c.rejected_by == Stage::None;
 	}
-	e.ms.cull = lapMs(t0);
+	e.ms.add("cull", lapMs(t0));
 	if (static_cast<size_t>(e.counts.gradient_kept) < minN) return finish(Reason::FewCulled);
 
 	// Triangulation and eq. 5.
@@ -144,7 +142,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 		owner.push_back(i);
 	}
 	e.counts.triangulated = static_cast<int>(s.size());
-	e.ms.triangulate = lapMs(t0);
+	e.ms.add("triangulate", lapMs(t0));
 	if (s.size() < minN)
 		return finish(2 * lowParallax > e.counts.gradient_kept ? Reason::DegenerateMotion : Reason::FewTriangulated);
 
@@ -156,7 +154,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 	e.counts.inliers = r.n_inliers;
 	e.scale = r.mean, e.spread = r.stddev;
 	e.inlier_ratio = static_cast<double>(r.n_inliers) / static_cast<double>(s.size());
-	e.ms.ransac = lapMs(t0);
+	e.ms.add("ransac", lapMs(t0));
 	const bool enough = static_cast<size_t>(r.n_inliers) >= minN && e.inlier_ratio >= opt_.min_inlier_ratio;
 	return finish(enough ? Reason::Ok : Reason::FewInliers);
 }

@@ -41,9 +41,7 @@ class OrbVoModule : public MonocularVisualOdometry
 		table.set("vo_keyframe", info.keyframe);
 		table.set("vo_reinit", static_cast<long long>(info.reinits));
 		table.set("vo_metric", info.metric);
-		table.set("ms_vo_extract", info.ms_extract, 2);
-		table.set("ms_vo_track", info.ms_track, 2);
-		table.set("ms_vo_mapping", info.ms_mapping, 2);
+		table.setTimes("vo_", info.ms);
 
 		// A camera motion C seen from the vehicle: V = Tvc * C * Tvc^-1. The lever arm of Tvc is in
 		// metres: in a map of unknown scale it is left out (camera path in vehicle axes), or it would

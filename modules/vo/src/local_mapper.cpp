@@ -17,19 +17,19 @@ MappingStats LocalMapper::process(KeyFrame* kf)
 	auto t = SteadyClock::now();
 	attach(kf);
 	st.culled_points = cullRecentPoints(kf);
-	st.ms_other = lapMs(t);
+	st.ms.add("other", lapMs(t));
 	st.new_points = createPoints(kf);
-	st.ms_triangulate = lapMs(t);
+	st.ms.add("triangulate", lapMs(t));
 	st.fused = fuseNeighbours(kf);
-	st.ms_fuse = lapMs(t);
+	st.ms.add("fuse", lapMs(t));
 	window_ = localWindow(kf, opt_.max_ba_keyframes);
 	if (opt_.local_ba)
 		st.ba = bundleAdjust(window_, cam_, pyr_, opt_.ba_iterations, opt_.ba_refine_iterations, topt_.chi2,
 			nullptr);
-	st.ms_ba = lapMs(t);
+	st.ms.add("ba", lapMs(t));
 	st.culled_keyframes = cullKeyFrames(kf);
 	scrub();
-	st.ms_other += lapMs(t);
+	st.ms.add("other", lapMs(t));
 	stats_ = st;
 	return st;
 }

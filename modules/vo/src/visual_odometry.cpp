@@ -45,7 +45,7 @@ VoFrameInfo VisualOdometry::Impl::process(const cv::Mat& gray, double t)
 	info.t = t;
 	auto t0 = SteadyClock::now();
 	current_feat = std::make_shared<Features>(extractor.extract(gray));
-	info.ms_extract = msSince(t0);
+	info.ms.add("extract", msSince(t0));
 	info.features = static_cast<int>(current_feat->size());
 	TrackedFrame cur(info.index, t, current_feat);
 
@@ -69,7 +69,7 @@ VoFrameInfo VisualOdometry::Impl::process(const cv::Mat& gray, double t)
 	}
 	else
 		initialise(cur, info);
-	info.ms_track = msSince(t0) - info.ms_mapping;
+	info.ms.add("track", msSince(t0) - info.ms.ms("mapping"));
 
 	// Untracked frames stay LOST from a tracking failure until a new map is made.
 	info.state = cur.has_pose ? VoState::Ok : state;
@@ -134,9 +134,7 @@ void VisualOdometry::Impl::insertKeyFrame(TrackedFrame& cur, VoFrameInfo& inf)
 	for (std::size_t i = 0; i < cur.size(); ++i)
 		if (cur.points[i] && !cur.points[i]->bad) kf->points[i] = cur.points[i];
 	const MappingStats st = mapper->process(kf);
-	inf.ms_triangulate = st.ms_triangulate;
-	inf.ms_fuse = st.ms_fuse;
-	inf.ms_ba = st.ms_ba;
+	inf.mapping_ms = st.ms;
 	inf.new_points = st.new_points;
 	inf.ba_keyframes = st.ba.keyframes;
 	inf.ba_fixed = st.ba.fixed;
@@ -146,7 +144,7 @@ void VisualOdometry::Impl::insertKeyFrame(TrackedFrame& cur, VoFrameInfo& inf)
 	last_kf = kf;
 	last_kf_frame = cur.index;
 	inf.keyframe = true;
-	inf.ms_mapping += msSince(t0);
+	inf.ms.add("mapping", msSince(t0));
 }
 
 void VisualOdometry::Impl::lose()

@@ -13,7 +13,7 @@ void VisualOdometry::Impl::initialise(TrackedFrame& cur, VoFrameInfo& inf)
 	inf.matches = r.matches;
 	inf.reason = r.reason;
 	if (r.ok) startMap(r, cur, inf);
-	inf.ms_mapping += r.ok ? msSince(t0) : 0.0;
+	if (r.ok) inf.ms.add("mapping", msSince(t0));
 }
 
 void VisualOdometry::Impl::startMap(InitResult& r, TrackedFrame& cur, VoFrameInfo& inf)

@@ -18,7 +18,6 @@ struct Run
 	Trajectory estimate;  ///< tracked frames only
 	Trajectory truth;  ///< all frames
 	int tracked = 0, lost = 0;
-	double ms_track_max = 0;
 };
 
 /// A camera pose or motion in vehicle axes: Tvc * C * Tvc^-1 in a metric map; in an unscaled one the

@@ -6,6 +6,7 @@
 //   IcpOdometry odo(options);
 //   for (each scan) { auto r = odo.process(t, scan, guess_or_nullopt); use r.pose; }
 #include <vlo/core/frame.h>
+#include <vlo/core/stage_times.h>
 #include <vlo/icp/adaptive_threshold.h>
 #include <vlo/icp/deskew.h>
 #include <vlo/icp/options.h>
@@ -40,7 +41,8 @@ struct IcpResult
 	double sigma = 0;  ///< adaptive threshold used [m]
 	double model_error = 0;  ///< of this frame's prediction [m]
 	std::size_t map_points = 0;
-	double ms_preprocess = 0, ms_registration = 0, ms_map_update = 0;
+	/// features (preprocessing), mapping (registration and map update)
+	StageTimes ms{{"features", "mapping"}};
 };
 
 class IcpOdometry

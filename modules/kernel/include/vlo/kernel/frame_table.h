@@ -2,6 +2,8 @@
 // The per-frame table written as frames.csv: each module sets its own columns for the current row.
 // Missing cells stay empty. Column order (doc/FORMATS.md): frame, t, x, y, z; then each module's
 // columns; then the milliseconds (ms_*), ms_total last.
+#include <vlo/core/stage_times.h>
+
 #include <map>
 #include <string>
 #include <vector>
@@ -18,6 +20,8 @@ class FrameTable
 	void set(const std::string& column, double value, int decimals = 4);
 	void set(const std::string& column, long long value);
 	void set(const std::string& column, bool value) { set(column, std::string(value ? "1" : "0")); }
+	/// One column ms_<prefix><stage> per stage, in the stages' order, 2 decimals.
+	void setTimes(const std::string& prefix, const StageTimes& times);
 
 	std::size_t rows() const { return rows_.size(); }
 	/// In the CSV's order: the leading columns, then modules by the order each first wrote (a module

@@ -6,6 +6,7 @@
 //   for (each scan) { auto r = lo.process(t, scan, vo_motion_or_nullopt); use r.pose; }
 //   lo.mapPoints();  // for map.pcd
 #include <vlo/core/frame.h>
+#include <vlo/core/stage_times.h>
 #include <vlo/loam/features.h>
 #include <vlo/loam/mapping.h>
 #include <vlo/loam/motion_prior.h>
@@ -29,11 +30,6 @@ enum class FrameStatus
 };
 const char* toString(FrameStatus s);
 
-struct StageTimes
-{
-	double preprocess = 0, features = 0, deskew = 0, odometry = 0, mapping = 0, map_update = 0, total = 0;  ///< [ms]
-};
-
 struct LidarOdometryResult
 {
 	double t = 0;
@@ -51,7 +47,8 @@ struct LidarOdometryResult
 	ScanToScanOdometry::Result odometry;  ///< iterations, matches, residual, ok/reason (last pass)
 	ScanToMap::Result mapping;  ///< iterations, matches, residual, degeneracy, ok/reason
 	std::size_t map_edge_points = 0, map_plane_points = 0;
-	StageTimes ms;
+	/// features (preprocessing and extraction), odometry (deskew and scan-to-scan), mapping (scan-to-map and map update)
+	StageTimes ms{{"features", "odometry", "mapping"}};
 };
 
 class LidarOdometry

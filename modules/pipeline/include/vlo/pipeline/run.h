@@ -1,6 +1,8 @@
 #pragma once
 // One replay of a rawlog through the configured estimators, and everything it leaves in the output
 // folder: trajectories, frames.csv, map.pcd, run.ini, summary.json and snapshots/.
+#include <vlo/pipeline/stage_timings.h>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +28,7 @@ struct RunSummary
 	std::string final_trajectory;  ///< file name inside the output folder
 	std::string reader_stats;
 	std::vector<std::pair<std::string, double>> figures;  ///< mode-specific counts for summary.json
+	std::vector<StageTiming> stage_timings;  ///< per ms_* column of frames.csv, for summary.json and the log
 };
 
 /// Throws InputError for bad input (files, options, data); nothing is left half-written.

@@ -29,6 +29,6 @@ struct RunOutputs
 		const std::string& gtPath) const;
 };
 
-/// summary.json: mode, frames, timing, path length, largest step, reader statistics, inputs.
+/// summary.json: mode, frames, timing, path length, largest step, reader statistics, inputs, the per-stage timings.
 void writeSummaryJson(const std::string& path, const RunSummary& s, const RunRequest& req);
 }  // namespace vlo

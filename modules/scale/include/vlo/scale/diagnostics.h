@@ -1,6 +1,8 @@
 #pragma once
 // What the scale corrector reports per frame: the estimate, why it is (not) valid, counts and
 // milliseconds per stage, and per keypoint the stage that rejected it (for frames.csv and snapshots).
+#include <vlo/core/stage_times.h>
+
 #include <opencv2/core/types.hpp>
 
 #include <vector>
@@ -59,11 +61,6 @@ struct StageCounts
 	int inliers = 0;
 };
 
-struct StageTimes  ///< milliseconds
-{
-	double project = 0, select = 0, track = 0, cull = 0, triangulate = 0, ransac = 0, total = 0;
-};
-
 struct ScaleEstimate
 {
 	bool valid = false;
@@ -72,7 +69,7 @@ struct ScaleEstimate
 	double spread = 0;  ///< standard deviation of the inlier s_j
 	double inlier_ratio = 0;  ///< inliers / triangulated
 	StageCounts counts;
-	StageTimes ms;
+	StageTimes ms{{"project", "select", "track", "cull", "triangulate", "ransac"}};
 	std::vector<KeypointDiag> keypoints;  ///< one per selected keypoint
 };
 }  // namespace vlo::scale

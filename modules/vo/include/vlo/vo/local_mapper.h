@@ -2,6 +2,7 @@
 // Local mapping after each new keyframe (ORB-SLAM's LocalMapping, run inline): attach the
 // keyframe's points, cull young points that are rarely found, triangulate new points with the
 // covisible keyframes, fuse duplicates, bundle-adjust the local window, cull redundant keyframes.
+#include <vlo/core/stage_times.h>
 #include <vlo/vo/map.h>
 #include <vlo/vo/matcher.h>
 #include <vlo/vo/optimizer.h>
@@ -12,7 +13,7 @@ struct MappingStats
 {
 	int new_points = 0, fused = 0, culled_points = 0, culled_keyframes = 0;
 	BundleStats ba;
-	double ms_triangulate = 0, ms_fuse = 0, ms_ba = 0, ms_other = 0;
+	StageTimes ms{{"triangulate", "fuse", "ba", "other"}};
 };
 
 class LocalMapper

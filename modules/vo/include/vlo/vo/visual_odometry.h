@@ -7,6 +7,7 @@
 // For the scale corrector: each frame's relative motion, the local window of the last local bundle
 // adjustment, rescaleAboutWindow() (the whole map, about the window's earliest keyframe) for a drift
 // correction, and setMapScale() (about the map's origin) for the metric scale of a fresh map.
+#include <vlo/core/stage_times.h>
 #include <vlo/vo/features.h>
 #include <vlo/vo/geometry.h>
 #include <vlo/vo/options.h>
@@ -47,9 +48,9 @@ struct VoFrameInfo
 	/// setMapScale() was called on the current map since it was made: map units are metres. Until
 	/// then lever arms (metric) cannot be combined with the poses.
 	bool metric = false;
-	double ms_extract = 0, ms_track = 0, ms_mapping = 0;
+	StageTimes ms{{"extract", "track", "mapping"}};
 	/// Local mapping detail when a keyframe was made: its stages and the bundle adjustment's size.
-	double ms_triangulate = 0, ms_fuse = 0, ms_ba = 0;
+	StageTimes mapping_ms{{"triangulate", "fuse", "ba", "other"}};
 	int new_points = 0, ba_keyframes = 0, ba_fixed = 0, ba_points = 0;
 };
 

@@ -69,12 +69,12 @@ TEST(Traffic, VehiclesKeepToTheRoadAtTheirSpeedAndNeverTouch)
 			if (!tr.present(i, t) || !tr.present(i, t + 0.1)) continue;
 			++samples;
 			const Eigen::Isometry3d p = tr.pose(i, t), q = tr.pose(i, t + 0.1);
-			// On the asphalt's driving lanes (3.5 m either side of the centre line), on its surface.
+			// On the asphalt of the narrowest road (trees: 3.6 m either side of the centre line), on its surface.
 			const Station* st = sc->road.nearest(p.translation().head<2>(), 10);
 			ASSERT_NE(st, nullptr) << "vehicle " << i << " left the road at t = " << t;
 			const Eigen::Vector3d left(-std::sin(st->heading), std::cos(st->heading), 0);
 			const double lat = left.dot(p.translation() - st->p);
-			EXPECT_LE(std::abs(lat) + v.width / 2, 3.5 + 0.05) << "vehicle " << i << " t " << t;
+			EXPECT_LE(std::abs(lat) + v.width / 2, 3.6) << "vehicle " << i << " t " << t;
 			EXPECT_NEAR(p.translation().z(), sc->road.at(st->s).p.z() + st->grade * (p.translation() - st->p).head<2>().dot(
 				Eigen::Vector2d(std::cos(st->heading), std::sin(st->heading))), 0.05);
 			// Its own speed, in its own direction (forward along its x axis).
@@ -89,9 +89,11 @@ TEST(Traffic, VehiclesKeepToTheRoadAtTheirSpeedAndNeverTouch)
 			behind |= v.direction > 0 && rel.x() < -10;
 			passed |= behind && rel.x() > 10;
 			for (std::size_t j = i + 1; j < tr.vehicles().size(); ++j)
-				if (tr.present(j, t))
-					EXPECT_FALSE(overlap(p, v.length, v.width, tr.pose(j, t), tr.vehicles()[j].length, tr.vehicles()[j].width))
-						<< "vehicles " << i << " and " << j << " at t " << t;
+			{
+				if (!tr.present(j, t)) continue;
+				EXPECT_FALSE(overlap(p, v.length, v.width, tr.pose(j, t), tr.vehicles()[j].length, tr.vehicles()[j].width))
+					<< "vehicles " << i << " and " << j << " at t " << t;
+			}
 		}
 		overtakers += passed;
 	}
@@ -147,10 +149,10 @@ TEST(Traffic, LidarSeesEachVehicleAtItsFiringTimeAndTheCameraAtTheImageTime)
 	for (const auto& p : f.scan)
 	{
 		// Where the beam was at its firing time, and what it hits of the vehicles there and then.
-		const Eigen::Isometry3d L = sim.vehiclePoseAt(t + p.t) * f.rig.vehicle_T_lidar;
+		const Eigen::Isometry3d L = sim.vehiclePoseAt(t + p.time) * f.rig.vehicle_T_lidar;
 		const Eigen::Vector3d pl(p.x, p.y, p.z), dir = L.linear() * pl.normalized();
 		double r = 0;
-		if (Traffic::raycast(tr.placed(all, t + p.t), L.translation(), dir, 120, r) < 0 || std::abs(r - pl.norm()) > 0.3) continue;
+		if (Traffic::raycast(tr.placed(all, t + p.time), L.translation(), dir, 120, r) < 0 || std::abs(r - pl.norm()) > 0.3) continue;
 		++onVehicle;
 		atRange += std::abs(r - pl.norm()) < 0.01;
 		// The same beam against the vehicles at the frame's time: the moving ones were elsewhere.
@@ -158,7 +160,7 @@ TEST(Traffic, LidarSeesEachVehicleAtItsFiringTimeAndTheCameraAtTheImageTime)
 		offThen += Traffic::raycast(tr.placed(all, t), L.translation(), dir, 120, r0) < 0 || std::abs(r0 - pl.norm()) > 0.05;
 		// Fired within 4 ms of the image: the camera sees the same surface (vehicles move < 10 cm).
 		const Eigen::Vector3d c = CL * pl;
-		if (std::abs(p.t) > 0.004 || c.z() < 3) continue;
+		if (std::abs(p.time) > 0.004 || c.z() < 3) continue;
 		const double u = K.fx * c.x() / c.z() + K.cx, v = K.fy * c.y() / c.z() + K.cy;
 		if (u < 0 || v < 0 || u > K.width - 1 || v > K.height - 1) continue;
 		++inImage;

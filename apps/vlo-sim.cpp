@@ -25,7 +25,8 @@ int main(int argc, char** argv)
 				{"fisheye", "", "with --camera-distortion K1,K2,K3,K4: an equidistant (fisheye) lens instead"},
 				{"no-noise", "", "no image noise, range noise or dropouts (for checks)"},
 				{"foliage-depth", "M", "mean depth of LiDAR returns inside tree crowns and bushes (default 0: solid hulls)"},
-				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"}},
+				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
+				{"traffic", "N", "N vehicles driving the road both ways, overtaking and oncoming (default 0)"}},
 			"vlo-sim --out FILE.rawlog [options]\n\n"
 			  "Renders a seeded procedural drive headless: a grayscale camera (KITTI intrinsics) and a\n"
 			  "spinning LiDAR, 10 Hz, with ground truth in FILE.gt.tum (vehicle frame, relative to frame 0).");
@@ -49,6 +50,9 @@ int main(int argc, char** argv)
 		if (cl.has("no-noise")) cfg.range_noise = cfg.image_noise = cfg.dropout = 0;
 		cfg.foliage_depth = cl.getDouble("foliage-depth", 0);
 		if (!(cfg.foliage_depth >= 0 && cfg.foliage_depth <= 10)) vlo::failInput("--foliage-depth", "must be between 0 and 10 m");
+		const long traffic = cl.getInt("traffic", 0);
+		if (traffic < 0 || traffic > 1000) vlo::failInput("--traffic", "must be between 0 and 1000 vehicles");
+		cfg.traffic = static_cast<int>(traffic);
 		if (cl.has("blackout"))
 		{
 			const std::string b = cl.get("blackout");
@@ -75,6 +79,12 @@ int main(int argc, char** argv)
 		std::printf("vlo-sim: %d frames, %.0f points/frame, %.2f s/frame (%.1f s + %.1f s setup) -> %s, %s%s%s\n",
 				st.frames, st.points_per_frame, st.seconds / st.frames, st.seconds, setup, out.rawlog.c_str(),
 				st.ground_truth.c_str(), out.kitti_dir.empty() ? "" : ", ", out.kitti_dir.c_str());
+		if (cfg.traffic > 0)
+		{
+			double within = 0;
+			for (int k = 0; k < sim.frameCount(); ++k) within += sim.vehiclesWithin(k, 50);
+			std::printf("vlo-sim: traffic of %d vehicles, %.1f within 50 m on average\n", cfg.traffic, within / sim.frameCount());
+		}
 		return 0;
 	});
 }

@@ -73,13 +73,14 @@ std::vector<View> LidarSim::views(const PoseAt& world_T_lidar) const
 		v.world_T_cam.linear() = v.world_T_cam.linear() * d.R;
 		v.K = K_;
 		v.znear = 1.0, v.zfar = model_.max_range + 10;
+		v.moving = false;
 		out.push_back(v);
 	}
 	return out;
 }
 
 PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::vector<View>& views, const PoseAt& world_T_lidar,
-	const Foliage& foliage, const LidarNoise& noise, Rng& rng) const
+	const Foliage& foliage, const LidarNoise& noise, Rng& rng, const MovingObjects* moving) const
 {
 	PointCloud cloud;
 	cloud.reserve(dirs_.size());
@@ -91,17 +92,23 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 		// Beam origin and rotation in the view's optical frame (identity motion without distortion).
 		Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 		T.linear() = views_[vi].R.transpose();
-		const double tau = distortion_ ? firingTime(azimuthOf(c)) : 0.0;
+		const double fired = firingTime(azimuthOf(c)), tau = distortion_ ? fired : 0.0;
 		if (distortion_) T = views[vi].world_T_cam.inverse() * world_T_lidar(tau);
 		const DepthLookup look(tiles[vi], K_);
+		const Eigen::Isometry3d& W = views[vi].world_T_cam;
+		const Eigen::Isometry3d L = W * T;  // world_T_lidar of this firing
+		const std::vector<Traffic::Placed> movers = moving ? moving->at(fired) : std::vector<Traffic::Placed>{};
 		for (int j = 0; j < rings; ++j)
 		{
 			const Eigen::Vector3d& dL = dirs_[static_cast<std::size_t>(c) * rings + j];
 			double r = 0;
 			uint8_t gray = 0;
-			if (!look.intersect(T.translation(), T.linear() * dL, r, gray)) continue;
-			const Eigen::Isometry3d& W = views[vi].world_T_cam;
-			if (!foliage.penetrate(W * T.translation(), W.linear() * (T.linear() * dL), noise.foliage_depth, rng, r)) continue;
+			bool hit = look.intersect(T.translation(), T.linear() * dL, r, gray) &&
+				foliage.penetrate(W * T.translation(), W.linear() * (T.linear() * dL), noise.foliage_depth, rng, r);
+			double rm = 0;
+			const int face = movers.empty() ? -1 : Traffic::raycast(movers, L.translation(), L.linear() * dL, hit ? r : model_.max_range + 1, rm);
+			if (face >= 0) r = rm, gray = moving->gray(face), hit = true;
+			if (!hit) continue;
 			const double noisy = r + noise.range_sigma * rng.normal();
 			if (rng.uniform() < noise.dropout || noisy < model_.min_range || noisy > model_.max_range) continue;
 			const Eigen::Vector3d p = noisy * dL;

@@ -72,7 +72,8 @@ Renderer::Renderer(const std::vector<std::pair<int, int>>& sizes) : impl_(std::m
 
 Renderer::~Renderer() { --g_alive; }
 
-void Renderer::render(mrpt::opengl::COpenGLScene& scene, const std::vector<View>& views, std::vector<RenderedView>& out, bool gray)
+void Renderer::render(mrpt::opengl::COpenGLScene& scene, const std::vector<View>& views, std::vector<RenderedView>& out, bool gray,
+	mrpt::opengl::CRenderizable* moving)
 {
 	auto& d = *impl_;
 	if (views.size() != d.tiles.size()) throw std::logic_error("Renderer::render: one view per tile expected");
@@ -94,6 +95,7 @@ void Renderer::render(mrpt::opengl::COpenGLScene& scene, const std::vector<View>
 		// Pixel values (> 1) place the viewport; OpenGL counts rows from the bottom.
 		vp->setViewportPosition(t.x, d.height - t.y - t.h, t.w, t.h);
 		vp->setViewportClipDistances(static_cast<float>(v.znear), static_cast<float>(v.zfar));
+		if (moving) moving->setVisibility(v.moving);
 		glEnable(GL_DEPTH_TEST);
 		vp->render(d.width, d.height, 0, 0, &cam);
 		// The clip distances MRPT actually used (as CFBORender does) define the depth mapping.

@@ -1,3 +1,5 @@
+#include "traffic_mesh.h"
+
 #include <vlo/core/error.h>
 #include <vlo/sim/camera_sim.h>
 #include <vlo/sim/lidar_sim.h>
@@ -98,6 +100,8 @@ struct Simulator::Impl
 	std::unique_ptr<CameraSim> camera;
 	std::unique_ptr<LidarSim> lidar;
 	std::unique_ptr<Renderer> renderer;
+	Traffic traffic;
+	std::unique_ptr<TrafficMesh> trafficMesh;  // the camera's view of the traffic (null without traffic)
 };
 
 Simulator::Simulator(const SimConfig& cfg) : impl_(std::make_unique<Impl>())
@@ -112,6 +116,13 @@ Simulator::Simulator(const SimConfig& cfg) : impl_(std::make_unique<Impl>())
 	d.world = buildWorld(spec, d.drive.road);
 
 	d.scene.insert(d.world.makeOpenGL());
+	if (cfg.traffic < 0) failInput("--traffic", "must not be negative");
+	if (cfg.traffic > 0)
+	{
+		d.traffic = Traffic(d.drive.road, d.drive.motion, (cfg.frames - 1) / cfg.rate_hz, cfg.traffic, cfg.seed);
+		d.trafficMesh = std::make_unique<TrafficMesh>(cfg.seed);
+		d.scene.insert(d.trafficMesh->object());
+	}
 	auto vp = d.scene.getViewport("main");
 	vp->setCustomBackgroundColor(mrpt::img::TColorf(0.80f, 0.82f, 0.86f, 1.0f));  // overcast sky
 
@@ -130,6 +141,12 @@ Eigen::Isometry3d Simulator::vehiclePoseAt(double t) const { return impl_->drive
 Eigen::Isometry3d Simulator::vehiclePose(int k) const { return vehiclePoseAt(frameTime(k)); }
 const World& Simulator::world() const { return impl_->world; }
 const Road& Simulator::road() const { return impl_->drive.road; }
+const Traffic& Simulator::traffic() const { return impl_->traffic; }
+
+int Simulator::vehiclesWithin(int k, double radius) const
+{
+	return impl_->traffic.countWithin(vehiclePose(k).translation(), radius, frameTime(k));
+}
 
 Trajectory Simulator::groundTruth() const
 {
@@ -147,7 +164,16 @@ Frame Simulator::frame(int k, RenderedView* camera_depth)
 	std::vector<View> views{d.camera->view(d.drive.motion.pose(t) * rig.vehicle_T_camera)};
 	for (const View& v : d.lidar->views(lidarAt)) views.push_back(v);
 	std::vector<RenderedView> tiles;
-	d.renderer->render(d.scene, views, tiles, true);
+	MovingObjects moving;
+	std::vector<std::size_t> nearby;  // vehicles the LiDAR may reach during the sweep
+	if (d.trafficMesh)
+	{
+		d.trafficMesh->update(d.traffic, t);  // the camera sees them at the image time
+		nearby = d.traffic.near(lidarAt(0).translation(), d.cfg.lidar.max_range, t, d.cfg.lidar.period);
+		moving.at = [&](double tau) { return d.traffic.placed(nearby, t + tau); };
+		moving.gray = [&](int slot) { return d.trafficMesh->gray(slot); };
+	}
+	d.renderer->render(d.scene, views, tiles, true, d.trafficMesh ? d.trafficMesh->object().get() : nullptr);
 
 	Frame f;
 	f.index = static_cast<std::size_t>(k);
@@ -160,7 +186,8 @@ Frame Simulator::frame(int k, RenderedView* camera_depth)
 	Rng lidarNoise = Rng::stream(d.cfg.seed, "lidar noise", static_cast<uint64_t>(k));
 	const std::vector<RenderedView> lt(std::make_move_iterator(tiles.begin() + 1), std::make_move_iterator(tiles.end()));
 	const std::vector<View> lv(views.begin() + 1, views.end());
-	f.scan = d.lidar->sample(lt, lv, lidarAt, d.world.foliage(), {d.cfg.range_noise, d.cfg.dropout, d.cfg.foliage_depth}, lidarNoise);
+	f.scan = d.lidar->sample(lt, lv, lidarAt, d.world.foliage(), {d.cfg.range_noise, d.cfg.dropout, d.cfg.foliage_depth}, lidarNoise,
+		d.trafficMesh ? &moving : nullptr);
 	f.has_scan = true;
 	if (camera_depth) *camera_depth = std::move(tiles[0]);
 	return f;
@@ -174,6 +201,7 @@ std::string Simulator::summary() const
 	s << std::fixed << scenarioName(d.cfg.scenario) << " world: " << d.world.triangleCount() << " triangles along "
 	  << d.drive.road.length() << " m of road; drive " << pathLength(groundTruth()) << " m in " << frameCount() << " frames";
 	if (d.drive.corridor_to > d.drive.corridor_from) s << "; corridor " << d.drive.corridor_to - d.drive.corridor_from << " m";
+	if (d.cfg.traffic > 0) s << "; traffic " << d.cfg.traffic << " vehicles";
 	return s.str();
 }
 }  // namespace vlo::sim

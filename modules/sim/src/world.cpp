@@ -27,7 +27,7 @@ class MipmappedTriangles : public mrpt::opengl::CSetOfTexturedTriangles
 	void render(const mrpt::opengl::CRenderizable::RenderContext& rc) const override
 	{
 		CSetOfTexturedTriangles::render(rc);
-		if (mipmapped_) return;
+		if (mipmapped_ || getTrianglesCount() == 0) return;  // an empty object binds no texture
 		GLint tex = 0;
 		glGetIntegerv(GL_TEXTURE_BINDING_2D, &tex);  // MRPT leaves its texture bound
 		if (tex == 0) return;
@@ -39,7 +39,39 @@ class MipmappedTriangles : public mrpt::opengl::CSetOfTexturedTriangles
    private:
 	mutable bool mipmapped_ = false;
 };
+
+/// The triangles of one texture as MRPT draws them.
+void fillTriangles(mrpt::opengl::CSetOfTexturedTriangles& obj, const std::vector<World::Tri>& tris)
+{
+	obj.clearTriangles();
+	for (const World::Tri& tri : tris)
+	{
+		mrpt::opengl::TTriangle T;
+		for (int k = 0; k < 3; ++k)
+		{
+			const auto& p = tri.v[k].p;
+			T.vertex(k) = mrpt::math::TPoint3Df(float(p.x()), float(p.y()), float(p.z()));
+			T.u(k) = static_cast<float>(tri.v[k].u);
+			T.v(k) = static_cast<float>(tri.v[k].v);
+			T.vertices[k].setColor(mrpt::img::TColor(255, 255, 255, 255));
+		}
+		T.computeNormals();
+		obj.insertTriangle(T);
+	}
+}
 }  // namespace
+
+Texture darkened(const Texture& tex, double f)
+{
+	Texture t = tex;
+	t.image = t.image.makeDeepCopy();
+	for (unsigned r = 0; r < t.image.getHeight(); ++r)
+	{
+		auto* row = t.image.ptrLine<uint8_t>(r);
+		for (unsigned c = 0; c < t.image.getWidth() * t.image.channelCount(); ++c) row[c] = static_cast<uint8_t>(row[c] * f + 0.5);
+	}
+	return t;
+}
 
 int World::addTexture(Texture tex, bool shaded)
 {
@@ -62,15 +94,7 @@ int World::shadedVariant(int tex, const Eigen::Vector3d& normal)
 	const auto key = std::make_pair(tex, level);
 	const auto it = variants_.find(key);
 	if (it != variants_.end()) return it->second;
-	Texture t = textures_[tex];
-	t.image = t.image.makeDeepCopy();
-	const double f = level == 1 ? 0.82 : 0.64;
-	for (unsigned r = 0; r < t.image.getHeight(); ++r)
-	{
-		auto* row = t.image.ptrLine<uint8_t>(r);
-		for (unsigned c = 0; c < t.image.getWidth() * t.image.channelCount(); ++c) row[c] = static_cast<uint8_t>(row[c] * f + 0.5);
-	}
-	const int id = addTexture(std::move(t), false);
+	const int id = addTexture(darkened(textures_[tex], level == 1 ? 0.82 : 0.64), false);
 	variants_[key] = id;
 	return id;
 }
@@ -105,13 +129,13 @@ std::size_t World::triangleCount() const
 	return n;
 }
 
-mrpt::opengl::CSetOfObjects::Ptr World::makeOpenGL() const
+mrpt::opengl::CSetOfObjects::Ptr World::makeOpenGL(bool every_texture) const
 {
 	// MRPT 2.5 gives each textured object its own texture unit for the life of the process (192 in
 	// llvmpipe); beyond that it silently draws wrong textures, so fail clearly instead.
 	static int unitsUsed = 0;
 	int needed = 0;
-	for (const auto& t : tris_) needed += !t.empty();
+	for (const auto& t : tris_) needed += every_texture || !t.empty();
 	if (unitsUsed + needed > 190)
 		throw std::runtime_error("MRPT texture units exhausted: at most ~190 textures per process (this world needs " +
 			std::to_string(needed) + ", " + std::to_string(unitsUsed) + " already used by earlier worlds)");
@@ -119,22 +143,9 @@ mrpt::opengl::CSetOfObjects::Ptr World::makeOpenGL() const
 	auto root = mrpt::opengl::CSetOfObjects::Create();
 	for (std::size_t t = 0; t < textures_.size(); ++t)
 	{
-		if (tris_[t].empty()) continue;
+		if (tris_[t].empty() && !every_texture) continue;
 		auto obj = std::make_shared<MipmappedTriangles>();
-		for (const Tri& tri : tris_[t])
-		{
-			mrpt::opengl::TTriangle T;
-			for (int k = 0; k < 3; ++k)
-			{
-				const auto& p = tri.v[k].p;
-				T.vertex(k) = mrpt::math::TPoint3Df(float(p.x()), float(p.y()), float(p.z()));
-				T.u(k) = static_cast<float>(tri.v[k].u);
-				T.v(k) = static_cast<float>(tri.v[k].v);
-				T.vertices[k].setColor(mrpt::img::TColor(255, 255, 255, 255));
-			}
-			T.computeNormals();
-			obj->insertTriangle(T);
-		}
+		fillTriangles(*obj, tris_[t]);
 		obj->assignImage(textures_[t].image);
 		obj->enableTextureLinearInterpolation(true);
 		// MRPT 2.5's lit textured shader runs at medium precision: depth off by ~0.3 % and vertices
@@ -143,6 +154,19 @@ mrpt::opengl::CSetOfObjects::Ptr World::makeOpenGL() const
 		root->insert(obj);
 	}
 	return root;
+}
+
+void World::clearTriangles()
+{
+	for (auto& list : tris_) list.clear();
+	chunks_.clear();
+}
+
+void World::updateOpenGL(mrpt::opengl::CSetOfObjects& scene) const
+{
+	if (scene.size() != tris_.size()) throw std::logic_error("World::updateOpenGL: the scene was made for other textures");
+	std::size_t t = 0;
+	for (const auto& obj : scene) fillTriangles(dynamic_cast<mrpt::opengl::CSetOfTexturedTriangles&>(*obj), tris_[t++]);
 }
 
 void World::buildChunks() const

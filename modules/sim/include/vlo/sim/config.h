@@ -59,6 +59,8 @@ struct SimConfig
 	/// Frames [blackout_first, blackout_end) get a uniform grey image: a blinded camera (glare, a tunnel
 	/// exit), to exercise the VO's LOST state and the LiDAR-only fallback.
 	int blackout_first = -1, blackout_end = -1;
+	/// Vehicles driving the road in both directions, seen by both sensors (traffic.h); 0 = a static world.
+	int traffic = 0;
 	/// KITTI camera-0 poses to drive along instead of a generated drive ("" = generate).
 	std::string kitti_poses;
 };

@@ -13,6 +13,7 @@
 #include <vlo/sim/config.h>
 #include <vlo/sim/foliage.h>
 #include <vlo/sim/renderer.h>
+#include <vlo/sim/traffic.h>
 
 #include <functional>
 
@@ -25,6 +26,14 @@ struct LidarNoise
 	double range_sigma = 0.02;  ///< m
 	double dropout = 0.005;  ///< probability of a lost return
 	double foliage_depth = 0;  ///< m, mean depth of a return inside a crown (0: the hull returns)
+};
+
+/// Objects that move during the sweep (traffic): every firing sees them at its own time t + tau, also
+/// in an ideal (de-skewed) scan, since de-skewing with the sensor's motion cannot undo theirs.
+struct MovingObjects
+{
+	std::function<std::vector<Traffic::Placed>(double tau)> at;  ///< where they are at t + tau
+	std::function<uint8_t(int slot)> gray;  ///< grey level (0-255) of a face, by texture slot
 };
 
 class LidarSim
@@ -41,9 +50,10 @@ class LidarSim
 	/// The views to render for one sweep.
 	std::vector<View> views(const PoseAt& world_T_lidar) const;
 	/// Points (LiDAR frame, firing order: azimuth-major) from the rendered views; beams that hit a crown
-	/// of `foliage` return from inside it (LidarNoise::foliage_depth).
+	/// of `foliage` return from inside it (LidarNoise::foliage_depth); `moving` objects (not drawn in the
+	/// views) are ray-cast where they are at each firing's time.
 	PointCloud sample(const std::vector<RenderedView>& tiles, const std::vector<View>& views, const PoseAt& world_T_lidar,
-		const Foliage& foliage, const LidarNoise& noise, Rng& rng) const;
+		const Foliage& foliage, const LidarNoise& noise, Rng& rng, const MovingObjects* moving = nullptr) const;
 
    private:
 	struct ViewDef

@@ -12,6 +12,7 @@
 namespace mrpt::opengl
 {
 class COpenGLScene;
+class CRenderizable;
 }
 
 namespace vlo::sim
@@ -23,6 +24,7 @@ struct View
 	Eigen::Isometry3d world_T_cam = Eigen::Isometry3d::Identity();  ///< optical frame: z fwd, x right, y down
 	PinholeCamera K;
 	double znear = 1.0, zfar = 150.0;
+	bool moving = true;  ///< draw the moving objects passed to Renderer::render (the LiDAR ray-casts them instead)
 };
 
 struct RenderedView
@@ -44,7 +46,9 @@ class Renderer
 	Renderer& operator=(const Renderer&) = delete;
 
 	/// Renders views[i] into tile i (sizes must match), then reads back depth, and gray if asked.
-	void render(mrpt::opengl::COpenGLScene& scene, const std::vector<View>& views, std::vector<RenderedView>& out, bool gray);
+	/// `moving` (part of the scene, may be null) is drawn only in the views that ask for it.
+	void render(mrpt::opengl::COpenGLScene& scene, const std::vector<View>& views, std::vector<RenderedView>& out, bool gray,
+		mrpt::opengl::CRenderizable* moving = nullptr);
 
    private:
 	struct Impl;

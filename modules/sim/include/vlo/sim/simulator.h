@@ -5,6 +5,7 @@
 #include <vlo/sim/config.h>
 #include <vlo/sim/drive.h>
 #include <vlo/sim/road.h>
+#include <vlo/sim/traffic.h>
 #include <vlo/sim/world.h>
 
 #include <memory>
@@ -38,6 +39,10 @@ class Simulator
 
 	const World& world() const;
 	const Road& road() const;
+	/// The moving vehicles (none unless SimConfig::traffic > 0), and how many are within `radius` of
+	/// the ego vehicle at frame k.
+	const Traffic& traffic() const;
+	int vehiclesWithin(int k, double radius) const;
 	/// One line about the world (size, triangles, path length) for logs.
 	std::string summary() const;
 

@@ -20,6 +20,9 @@ struct Vertex
 	double u = 0, v = 0;  ///< texture coordinates in repeats of the texture
 };
 
+/// A copy of `tex` with every grey level scaled by f (shading baked into the texture).
+Texture darkened(const Texture& tex, double f);
+
 class World
 {
    public:
@@ -43,17 +46,24 @@ class World
 
 	std::size_t triangleCount() const;
 	/// Builds the renderable scene content (call once; textures are uploaded on first render).
-	mrpt::opengl::CSetOfObjects::Ptr makeOpenGL() const;
+	/// `every_texture`: one object per texture even without triangles, for updateOpenGL.
+	mrpt::opengl::CSetOfObjects::Ptr makeOpenGL(bool every_texture = false) const;
+	/// Removes every triangle and keeps the textures: a world rebuilt each frame (moving vehicles).
+	void clearTriangles();
+	/// Replaces the triangles of `scene`, made by makeOpenGL(true) when the world had the same
+	/// textures, with the current ones: the texture units stay, only the geometry is uploaded again.
+	void updateOpenGL(mrpt::opengl::CSetOfObjects& scene) const;
 
 	/// Exact first hit of the ray o + r d (|d| = 1), r in (0, max_range]. Brute force over chunks of
 	/// triangles with bounding boxes: for tests and checks, not for sensor simulation.
 	bool raycast(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double max_range, double& range) const;
 
-   private:
 	struct Tri
 	{
 		Vertex v[3];
 	};
+
+   private:
 	struct Chunk
 	{
 		Eigen::Vector3d lo, hi;

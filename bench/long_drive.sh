@@ -17,12 +17,11 @@ drive=$out/drive_$frames.rawlog
 	--overwrite --quiet > "$out/run_$frames.log" &
 timer=$!
 : > "$out/run_$frames.rss"
-t=0
+started=$SECONDS
 while kill -0 "$timer" 2> /dev/null; do
 	run=$(pgrep -P "$timer" vlo-run || true)
-	[[ -n $run ]] && echo "$t $(awk '/^VmRSS/ { print $2 }' "/proc/$run/status" 2> /dev/null)" >> "$out/run_$frames.rss"
+	[[ -n $run ]] && echo "$((SECONDS - started)) $(awk '/^VmRSS/ { print $2 }' "/proc/$run/status" 2> /dev/null)" >> "$out/run_$frames.rss"
 	sleep 5
-	t=$((t + 5))
 done
 wait "$timer"
 rss_kb=$(awk -F': ' '/Maximum resident set size/ { print $2 }' "$out/run_$frames.time")

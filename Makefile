@@ -46,8 +46,8 @@ test-sanitize: deps
 	cd $(SAN_BUILD) && $(SAN_ENV) ctest --output-on-failure -j $(JOBS) -R '$(SAN_TESTS)' -E '$(SAN_EXCLUDE)' --output-log ctest.log
 	@if grep -E '\*\*\*Skipped' $(SAN_BUILD)/ctest.log; then echo "make test-sanitize: tests were skipped (see above)"; exit 1; fi
 
-# Meant for CI (not in .ci/run yet, doc/ROBUSTNESS.md): the unit tests of core, io, kernel under ASan + UBSan;
-# the whole suite does not fit CI's time on 2 cores (doc/ROBUSTNESS.md).
+# Run by CI (.ci/run, after make test): the unit tests of core, io, kernel under ASan + UBSan; the whole suite
+# does not fit CI's time on 2 cores (doc/ROBUSTNESS.md).
 test-sanitize-ci:
 	$(MAKE) test-sanitize SAN_TARGETS='test_core test_io test_kernel' SAN_EXCLUDE='_NOT_BUILT|^e2e_'
 

@@ -3,7 +3,9 @@
 # memory must not grow with the drive's length, the time per frame must stay flat). Not run in CI (too long).
 # Usage: bench/long_drive.sh BIN_DIR OUT_DIR [FRAMES (default 5000: ~5 km)] [SEED (default 7)]
 # Generates OUT_DIR/drive_FRAMES.rawlog with vlo-sim (HDL-64E, urban) unless it exists, runs vlo-run under
-# /usr/bin/time -v and prints one markdown row.
+# /usr/bin/time -v and prints one markdown row, then vlo-run's resident memory at each tenth of the drive
+# (sampled every 5 s into OUT_DIR/run_FRAMES.rss: seconds since the start, RSS kB; a sample's frame is
+# found from the frames' own times in frames.csv): flat once the maps are full.
 set -euo pipefail
 [[ $# -ge 2 ]] || { echo "usage: $0 BIN_DIR OUT_DIR [FRAMES] [SEED]" >&2; exit 2; }
 bin=$1 out=$2 frames=${3:-5000} seed=${4:-7}
@@ -12,17 +14,39 @@ mkdir -p "$out"
 drive=$out/drive_$frames.rawlog
 [[ -s $drive ]] || "$bin/vlo-sim" --lidar hdl64 --frames "$frames" --seed "$seed" --out "$drive" --quiet
 /usr/bin/time -v -o "$out/run_$frames.time" "$bin/vlo-run" --rawlog "$drive" --ini "$ini" --out "$out/run_$frames" \
-	--overwrite --quiet > "$out/run_$frames.log"
+	--overwrite --quiet > "$out/run_$frames.log" &
+timer=$!
+: > "$out/run_$frames.rss"
+started=$SECONDS
+while kill -0 "$timer" 2> /dev/null; do
+	run=$(pgrep -P "$timer" vlo-run || true)
+	[[ -n $run ]] && echo "$((SECONDS - started)) $(awk '/^VmRSS/ { print $2 }' "/proc/$run/status" 2> /dev/null)" >> "$out/run_$frames.rss"
+	sleep 5
+done
+wait "$timer"
 rss_kb=$(awk -F': ' '/Maximum resident set size/ { print $2 }' "$out/run_$frames.time")
 points=$(awk '/^POINTS/ { print $2; exit }' "$out/run_$frames/map.pcd")
 echo "| frames | path [m] | peak RSS [MB] | map.pcd points | ms/frame, first 10 % | ms/frame, last 10 % |"
 echo "|---:|---:|---:|---:|---:|---:|"
-python3 - "$out/run_$frames/frames.csv" "$out/run_$frames/summary.json" "$rss_kb" "$points" <<'PY'
-import csv, json, sys
+python3 - "$out/run_$frames/frames.csv" "$out/run_$frames/summary.json" "$rss_kb" "$points" "$out/run_$frames.rss" <<'PY'
+import bisect, csv, itertools, json, sys
 rows = list(csv.DictReader(open(sys.argv[1], newline="")))
 ms = [float(r["ms_total"]) for r in rows]
 tenth = max(1, len(ms) // 10)
 path = json.load(open(sys.argv[2]))["path_length_m"]
 print(f"| {len(ms)} | {path:.0f} | {int(sys.argv[3]) / 1024:.0f} | {sys.argv[4]} | "
       f"{sum(ms[:tenth]) / tenth:.1f} | {sum(ms[-tenth:]) / tenth:.1f} |")
+# RSS per tenth of the frames: the frame loop ends with the last frame, so a sample taken s seconds before
+# the end is in the frame whose cumulative time (counted back from the last) passes s.
+samples = [tuple(map(int, l.split())) for l in open(sys.argv[5]) if len(l.split()) == 2]
+if samples:
+    end = samples[-1][0]
+    done = list(itertools.accumulate(ms))  # ms from the first frame's start to each frame's end
+    loop_start = end - done[-1] / 1000
+    rss = [0] * 10
+    for t, kb in samples:
+        if t >= loop_start:
+            k = min(len(ms) - 1, bisect.bisect_left(done, (t - loop_start) * 1000))
+            rss[k * 10 // len(ms)] = max(rss[k * 10 // len(ms)], kb)
+    print("peak RSS [MB] per tenth of the frames: " + " ".join(f"{kb / 1024:.0f}" for kb in rss))
 PY

@@ -15,7 +15,8 @@ int main(int argc, char** argv)
 	}
 	try
 	{
-		const auto seeds = vlo::fuzz::seedsOf(argv[1], argv[3]);
+		const std::string target = argv[1];
+		const auto seeds = target == "rosbag" ? vlo::fuzz::rosbagSeeds(argv[3]) : vlo::fuzz::seedsOf(target, argv[3]);
 		std::filesystem::create_directories(argv[2]);
 		for (std::size_t k = 0; k < seeds.size(); ++k)
 			std::ofstream(std::string(argv[2]) + "/seed-" + std::to_string(k), std::ios::binary) << seeds[k];

@@ -12,8 +12,10 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-#ifdef VLO_FUZZ_INI
+#if defined(VLO_FUZZ_INI)
 	static const vlo::fuzz::Target t = vlo::fuzz::iniTarget();
+#elif defined(VLO_FUZZ_ROSBAG)
+	static const vlo::fuzz::Target t = vlo::fuzz::rosbagTarget();
 #else
 	static const vlo::fuzz::Target t = vlo::fuzz::findTarget(vlo::fuzz::ioTargets(), VLO_FUZZ_TARGET);
 #endif

@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 secs=${1:-60}
 shift || true
-all=(rawlog rawlog_velodyne kitti_calib kitti_raw_calib kitti_times kitti_raw_timestamps kitti_poses kitti_bin tum ini)
+all=(rawlog rawlog_velodyne kitti_calib kitti_raw_calib kitti_times kitti_raw_timestamps kitti_poses kitti_bin tum ini rosbag)
 targets=("${@:-${all[@]}}")
 build=${VLO_FUZZ_BUILD:-build-fuzz}
 

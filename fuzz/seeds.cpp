@@ -77,36 +77,13 @@ std::string firstLines(const std::string& text, std::size_t n)
 	return end == std::string::npos ? text : text.substr(0, end + 1);
 }
 
-/// A 3-frame camera + LiDAR rawlog (vlo's writer, inline images) from KITTI odometry 00: a 48x32
-/// crop of each colour image and every 200th point of each scan, with the real calibration.
+/// A 3-frame camera + LiDAR rawlog (vlo's writer, inline images) of kittiSeedFrames.
 std::string kittiRawlog(const std::string& work)
 {
-	const std::string seq = unpacked("kitti_odometry_snippets", work) + "/sequences/00";
-	const auto calib = readKittiOdometryCalib(seq + "/calib.txt", 2);
 	const std::string path = work + "/fuzz_seed_kitti_" + std::to_string(::getpid()) + ".rawlog";
 	{
 		RawlogWriter writer(path, false);
-		for (std::size_t k = 0; k < 3; ++k)
-		{
-			char name[16];
-			std::snprintf(name, sizeof name, "%06zu", k);
-			Frame f;
-			f.index = k;
-			f.t = 0.1 * static_cast<double>(k);
-			mrpt::img::CImage image;
-			if (!image.loadFromFile(seq + "/image_2/" + name + ".png", 0)) throw std::runtime_error("cannot read a seed image");
-			image.extract_patch(f.image, 600, 180, 48, 32);
-			f.has_image = true;
-			PointCloud scan;
-			readKittiBin(seq + "/velodyne/" + name + ".bin", scan);
-			for (std::size_t i = 0; i < scan.size(); i += 200) f.scan.push_back(scan[i]);
-			f.has_scan = true;
-			f.rig.has_camera = f.rig.has_lidar = true;
-			f.rig.camera = intrinsicsOf(calib.P, 48, 32);
-			f.rig.camera.cx -= 600, f.rig.camera.cy -= 180;
-			f.rig.vehicle_T_camera = calib.cam0_T_velo.inverse();
-			writer.writeFrame(f);
-		}
+		for (const auto& f : kittiSeedFrames(work)) writer.writeFrame(f);
 		writer.commit();
 	}
 	const std::string bytes = fileBytes(path);
@@ -165,6 +142,35 @@ std::string tumFromKitti(const std::string& work)
 	return bytes;
 }
 }  // namespace
+
+std::vector<Frame> kittiSeedFrames(const std::string& work)
+{
+	const std::string seq = unpacked("kitti_odometry_snippets", work) + "/sequences/00";
+	const auto calib = readKittiOdometryCalib(seq + "/calib.txt", 2);
+	std::vector<Frame> frames;
+	for (std::size_t k = 0; k < 3; ++k)
+	{
+		char name[16];
+		std::snprintf(name, sizeof name, "%06zu", k);
+		Frame f;
+		f.index = k;
+		f.t = 0.1 * static_cast<double>(k);
+		mrpt::img::CImage image;
+		if (!image.loadFromFile(seq + "/image_2/" + name + ".png", 0)) throw std::runtime_error("cannot read a seed image");
+		image.extract_patch(f.image, 600, 180, 48, 32);
+		f.has_image = true;
+		PointCloud scan;
+		readKittiBin(seq + "/velodyne/" + name + ".bin", scan);
+		for (std::size_t i = 0; i < scan.size(); i += 200) f.scan.push_back(scan[i]);
+		f.has_scan = true;
+		f.rig.has_camera = f.rig.has_lidar = true;
+		f.rig.camera = intrinsicsOf(calib.P, 48, 32);
+		f.rig.camera.cx -= 600, f.rig.camera.cy -= 180;
+		f.rig.vehicle_T_camera = calib.cam0_T_velo.inverse();
+		frames.push_back(f);
+	}
+	return frames;
+}
 
 std::vector<std::string> seedsOf(const std::string& target, const std::string& work)
 {

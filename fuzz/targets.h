@@ -18,6 +18,13 @@ struct Target
 std::vector<Target> ioTargets();
 /// vlo-run's INI loading (library vlo_fuzz_ini, which needs the whole pipeline).
 Target iniTarget();
+/// vlo-import rosbag (library vlo_fuzz_rosbag, which needs ROS's bag library).
+Target rosbagTarget();
+
+/// Every frame of a camera + LiDAR rawlog / every pose of a TUM file, read; throws std::logic_error when a
+/// value read is not usable (what the "rawlog" and "tum" targets check).
+void readRawlogChecked(const std::string& path);
+void readTumChecked(const std::string& path);
 /// The one called `name` in `among`; throws std::invalid_argument if there is none.
 const Target& findTarget(const std::vector<Target>& among, const std::string& name);
 

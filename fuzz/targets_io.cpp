@@ -69,8 +69,6 @@ void readAllFrames(const std::string& path, RawlogReaderOptions opt)
 	expectIncreasing(times);
 }
 
-void readCameraLidarRawlog(const std::string& path) { readAllFrames(path, {}); }
-
 void readVelodyneRawlog(const std::string& path)
 {
 	RawlogReaderOptions opt;
@@ -113,7 +111,6 @@ void expectPoses(const Trajectory& traj)
 }
 
 void readPoses(const std::string& path) { expectPoses(readKittiPoses(path)); }
-void readTumFile(const std::string& path) { expectPoses(readTum(path)); }
 
 void readVelodyneBin(const std::string& path)
 {
@@ -123,10 +120,13 @@ void readVelodyneBin(const std::string& path)
 }
 }  // namespace
 
+void readRawlogChecked(const std::string& path) { readAllFrames(path, {}); }
+void readTumChecked(const std::string& path) { expectPoses(readTum(path)); }
+
 std::vector<Target> ioTargets()
 {
 	return {
-		{"rawlog", "input.rawlog", readCameraLidarRawlog},
+		{"rawlog", "input.rawlog", readRawlogChecked},
 		{"rawlog_velodyne", "input.rawlog", readVelodyneRawlog},
 		{"kitti_calib", "calib.txt", readOdometryCalib},
 		{"kitti_raw_calib", "calib_cam_to_cam.txt", readRawCalib},
@@ -134,7 +134,7 @@ std::vector<Target> ioTargets()
 		{"kitti_raw_timestamps", "timestamps.txt", readRawTimestamps},
 		{"kitti_poses", "poses.txt", readPoses},
 		{"kitti_bin", "0000000000.bin", readVelodyneBin},
-		{"tum", "trajectory.tum", readTumFile},
+		{"tum", "trajectory.tum", readTumChecked},
 	};
 }
 }  // namespace vlo::fuzz

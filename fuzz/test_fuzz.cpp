@@ -25,6 +25,7 @@ std::size_t inputsFor(const std::string& target)
 	if (const char* n = std::getenv("VLO_FUZZ_INPUTS")) return std::strtoul(n, nullptr, 10);
 	if (target == "rawlog") return 3000;
 	if (target == "rawlog_velodyne") return 1000;  // each input decodes Velodyne packets
+	if (target == "rosbag") return 2000;  // each input that reads is imported and read back
 	return 5000;
 }
 
@@ -36,6 +37,7 @@ std::vector<Target> allTargets()
 {
 	auto all = ioTargets();
 	all.push_back(iniTarget());
+	all.push_back(rosbagTarget());
 	return all;
 }
 
@@ -43,7 +45,8 @@ TEST_P(Fuzz, EveryInputReadsOrFailsWithOneLineNamingTheFile)
 {
 	const auto all = allTargets();
 	const Target& t = findTarget(all, GetParam());
-	const auto seeds = seedsOf(t.name, fs::path(VLO_BIN_DIR).parent_path().string() + "/test_data");
+	const std::string work = fs::path(VLO_BIN_DIR).parent_path().string() + "/test_data";
+	const auto seeds = t.name == "rosbag" ? rosbagSeeds(work) : seedsOf(t.name, work);
 	ASSERT_FALSE(seeds.empty());
 	const fs::path dir = fs::path(VLO_BIN_DIR).parent_path() / "fuzz_work" / t.name;
 	fs::remove_all(dir);
@@ -71,7 +74,7 @@ TEST_P(Fuzz, EveryInputReadsOrFailsWithOneLineNamingTheFile)
 
 INSTANTIATE_TEST_SUITE_P(Readers, Fuzz,
 	::testing::Values("rawlog", "rawlog_velodyne", "kitti_calib", "kitti_raw_calib", "kitti_times",
-		"kitti_raw_timestamps", "kitti_poses", "kitti_bin", "tum", "ini"),
+		"kitti_raw_timestamps", "kitti_poses", "kitti_bin", "tum", "ini", "rosbag"),
 	[](const auto& info) { return info.param; });
 }  // namespace
 

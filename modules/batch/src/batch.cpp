@@ -6,6 +6,7 @@
 #include <vlo/batch/tables.h>
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
+#include <vlo/core/interrupt.h>
 #include <vlo/core/log.h>
 
 #include <unistd.h>
@@ -86,6 +87,26 @@ void report(const char* what, const TaskResult& r, std::size_t done, std::size_t
 	logger().logFmt(mrpt::system::LVL_INFO, "%s %zu/%zu %s: %s, %.1f s%s%s", what, done, total, r.name.c_str(),
 		r.exit_code == 0 ? "ok" : "FAILED", r.seconds, why.empty() ? "" : ": ", why.c_str());
 }
+std::string joinNames(const std::vector<TaskResult>& results, bool (*pick)(const TaskResult&))
+{
+	std::string names;
+	for (const auto& r : results)
+		if (pick(r)) names += (names.empty() ? "" : ", ") + r.name;
+	return names;
+}
+
+/// After a stage's tasks: if a signal interrupted vlo-batch, says what it stopped (each task has removed
+/// what it was writing) and what never started; runApp turns it into exit code 130.
+void stopIfInterrupted(const char* stage, const std::vector<TaskResult>& results, const char* removed, const char* rest)
+{
+	if (interruptSignal() == 0) return;
+	const std::string stopped = joinNames(results, [](const TaskResult& r) { return r.stopped; });
+	const std::string unstarted = joinNames(results, [](const TaskResult& r) { return !r.started; });
+	std::string what = "nothing was running";
+	if (!stopped.empty()) what = std::string("stopped ") + stage + ": " + stopped + " (" + removed + ")";
+	if (!unstarted.empty()) what += "; not started: " + unstarted;
+	throw Interrupted(what + "; " + rest);
+}
 }  // namespace
 
 int runPlan(const BatchOptions& o)
@@ -106,11 +127,12 @@ int runPlan(const BatchOptions& o)
 		const DataJob j = dataJob(named(plan.sequences, t.name), o.bin_dir, out);
 		t.body = [j] { return executeDataJob(j); };
 	}
-	runTasks(gen, o.jobs, [&](const TaskResult& r, std::size_t done, std::size_t total) {
+	const auto genResults = runTasks(gen, o.jobs, [&](const TaskResult& r, std::size_t done, std::size_t total) {
 		const std::string err = out + "/generate/" + r.name + ".err";
 		if (r.exit_code != 0) notGenerated.insert(r.name);
 		report("generated", r, done, total, r.exit_code ? firstErrorLine(err) + " (" + err + ")" : "");
 	});
+	stopIfInterrupted("generating", genResults, "vlo-sim removes its partial drive", "no run started");
 
 	std::vector<Task> tasks;
 	const auto jobs = runJobs(plan, o.bin_dir, out);
@@ -119,12 +141,13 @@ int runPlan(const BatchOptions& o)
 			recordSkippedRun(j, "not run: sequence " + j.sequence + " could not be generated (see " + out + "/generate/)");
 		else
 			tasks.push_back({j.name, [j] { return executeRunJob(j); }});
-	runTasks(tasks, o.jobs, [&](const TaskResult& r, std::size_t done, std::size_t total) {
+	const auto runResults = runTasks(tasks, o.jobs, [&](const TaskResult& r, std::size_t done, std::size_t total) {
 		const RunJob& j = named(jobs, r.name);
 		const std::string why =
 			r.exit_code ? collectRun(j.dir, named(plan.sequences, j.sequence), named(plan.configs, j.config)).error : "";
 		report("run", r, done, total, why);
 	});
+	stopIfInterrupted("runs", runResults, "their folders removed", "results.md not written");
 	return writeResults(plan, out) == 0 ? 0 : 1;
 }
 

@@ -1,6 +1,7 @@
 #include <vlo/batch/execute.h>
 #include <vlo/batch/process.h>
 #include <vlo/core/error.h>
+#include <vlo/core/interrupt.h>
 
 #include <unistd.h>
 
@@ -45,19 +46,8 @@ int finish(const std::string& dir, int rc)
 	std::ofstream(dir + "/" + files::kExitCode) << rc << "\n";
 	return rc;
 }
-}  // namespace
 
-int executeDataJob(const DataJob& j)
-{
-	if (fs::is_regular_file(j.rawlog) && fs::is_regular_file(j.gt)) return 0;
-	fs::create_directories(fs::path(j.rawlog).parent_path());
-	fs::create_directories(fs::path(j.sim.err).parent_path());
-	const int rc = runStep(j.sim);
-	if (rc == 0) std::ofstream(j.record_path) << j.record << "\n";
-	return rc;
-}
-
-int executeRunJob(const RunJob& j)
+int runAndEvaluate(const RunJob& j)
 {
 	prepareDir(j.dir);
 	// The steps name their files relative to the run folder, like the shell line after its cd.
@@ -75,6 +65,35 @@ int executeRunJob(const RunJob& j)
 	for (const auto& t : names)
 		if (runStep(j.evalStep(t)) != 0) evalRc = 1;
 	return finish(".", evalRc);
+}
+}  // namespace
+
+int executeDataJob(const DataJob& j)
+{
+	if (fs::is_regular_file(j.rawlog) && fs::is_regular_file(j.gt)) return 0;
+	fs::create_directories(fs::path(j.rawlog).parent_path());
+	fs::create_directories(fs::path(j.sim.err).parent_path());
+	const int rc = runStep(j.sim);
+	if (rc == 0) std::ofstream(j.record_path) << j.record << "\n";
+	return rc;
+}
+
+int executeRunJob(const RunJob& j)
+{
+	try
+	{
+		return runAndEvaluate(j);
+	}
+	catch (const Interrupted&)
+	{
+		// No half-done run that looks like a failed one: its folder goes (vlo-run has removed its own files),
+		// and runs/SEQUENCE/ and runs/ if nothing else is in them.
+		std::error_code ec;
+		fs::remove_all(j.dir, ec);
+		const fs::path sequenceDir = fs::path(j.dir).parent_path();
+		if (fs::remove(sequenceDir, ec)) fs::remove(sequenceDir.parent_path(), ec);
+		throw;
+	}
 }
 
 void recordSkippedRun(const RunJob& j, const std::string& why)

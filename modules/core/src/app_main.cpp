@@ -15,10 +15,10 @@ int runApp(const std::string& app, const std::function<int()>& body)
 	{
 		return body();
 	}
-	catch (const Interrupted&)
+	catch (const Interrupted& e)
 	{
 		// The last line of an interrupted run, like an app's final line: not a log message, shown with --quiet too.
-		std::cerr << app << ": interrupted: the outputs it was writing are removed" << std::endl;
+		std::cerr << app << ": interrupted: " << e.what() << std::endl;
 		return 130;
 	}
 	catch (const InputError& e)

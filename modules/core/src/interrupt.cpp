@@ -25,4 +25,6 @@ void throwIfInterrupted()
 {
 	if (g_signal != 0) throw Interrupted();
 }
+
+int interruptSignal() { return g_signal; }
 }  // namespace vlo

@@ -1,4 +1,5 @@
 #include <vlo/rosbag/bag_set.h>
+#include <vlo/rosbag/bag_structure.h>
 
 #include <console_bridge/console.h>
 
@@ -30,6 +31,7 @@ BagSet::BagSet(const std::vector<std::string>& paths)
 		std::error_code ec;
 		if (!std::filesystem::is_regular_file(path, ec)) failInput(path, "cannot open (no such file)");
 		bytes_ += std::filesystem::file_size(path, ec);
+		checkBagStructure(path);
 		try
 		{
 			bags_.push_back(std::make_unique<rosbag::Bag>(path, rosbag::bagmode::Read));

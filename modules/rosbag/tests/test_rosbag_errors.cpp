@@ -1,7 +1,9 @@
 // Broken input: one-line InputError naming the file (bag, or the option), and no output left behind.
 #include "rosbag_test_util.h"
 
+#include <cstring>
 #include <fstream>
+#include <sstream>
 
 namespace vlo::test
 {
@@ -27,6 +29,36 @@ TEST(RosbagErrors, TruncatedBag)
 	fs::resize_file(dir + "/cut.bag", size * 2 / 3);
 	fs::remove(dir + "/full.bag");
 	expectRefused(importOptions(dir + "/cut.bag", dir + "/out.rawlog"), {dir + "/cut.bag", "truncated"});
+}
+
+/// A copy of in.bag with 4 bytes at `pos` replaced by `value`.
+std::string patched(const std::string& dir, std::size_t pos, std::uint32_t value)
+{
+	std::ifstream in(dir + "/in.bag", std::ios::binary);
+	std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+	std::memcpy(&bytes[pos], &value, 4);
+	const std::string path = dir + "/patched_" + std::to_string(pos) + ".bag";
+	std::ofstream(path, std::ios::binary) << bytes;
+	return path;
+}
+
+// rosbag_storage trusts these sizes: it reallocs what they say (an assertion aborts the process when that
+// fails, e.g. under ulimit -v) or reads where they point. Found by fuzz/test_fuzz (target rosbag).
+TEST(RosbagErrors, CorruptSizesAreRefusedBeforeRosbagReadsThem)
+{
+	const std::string dir = freshDir();
+	writeBag(dir + "/in.bag", fewFrames(), {}, {});
+	std::ifstream in(dir + "/in.bag", std::ios::binary);
+	const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+	const std::size_t chunkSize = bytes.find(std::string("\x09\0\0\0size=", 9)) + 9;
+	ASSERT_NE(chunkSize, std::string::npos + 9);
+	const std::string hugeChunk = patched(dir, chunkSize, 0xFFFFFFF0u);
+	expectRefused(importOptions(hugeChunk, dir + "/out.rawlog"), {hugeChunk, "a chunk at byte", "size field says 4294967280"});
+	const std::string hugeHeader = patched(dir, 13, 0x7FFFFFFFu);  // the bag header record's header length
+	expectRefused(importOptions(hugeHeader, dir + "/out.rawlog"), {hugeHeader, "at byte 13", "a header of 2147483647 bytes"});
+	const std::string pastEnd = patched(dir, 13, 4096);  // fits the limit, runs past the bag header's padding
+	std::ostringstream listing;
+	expectInputError([&] { listRosbagTopics({pastEnd}, listing); }, {pastEnd, "not a readable ROS 1 bag", "past its end"});
 }
 
 TEST(RosbagErrors, MissingTopicListsTheTopicsThere)

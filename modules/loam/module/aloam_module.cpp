@@ -30,6 +30,7 @@ class AloamModule : public LidarOdometryModule
 
 		table.set("lo_status", std::string(loam::toString(r.status)));
 		table.set("lo_prior", r.prior_source);
+		table.set("lo_guess_stage", r.external_stage);
 		table.set("lo_points", static_cast<long long>(r.n_valid));
 		table.set("lo_sharp", static_cast<long long>(r.n_sharp));
 		table.set("lo_flat", static_cast<long long>(r.n_flat));
@@ -43,6 +44,9 @@ class AloamModule : public LidarOdometryModule
 		table.set("lo_map_points", static_cast<long long>(r.map_edge_points + r.map_plane_points));
 		table.setTimes("lo_", r.ms);
 		table.set("lo_reason", r.reason);
+		// external_stage = auto decides from these (doc/LOAM.md)
+		table.set("lo_odom_info_min", r.odometry.degeneracy.translation_information(0), 1);
+		table.set("lo_odom_info_next", r.odometry.degeneracy.translation_information(1), 1);
 		return mount_.vehiclePose(r.pose);
 	}
 

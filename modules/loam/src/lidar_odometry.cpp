@@ -81,11 +81,19 @@ void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, E
 	// Scan-to-scan, against the last usable scan (frames in between were skipped); not when an
 	// external motion goes straight to scan-to-map.
 	odom = odom_pose_ * r.guess;
-	const bool externalToMap = opt_.prior.external_stage == "mapping" && r.prior_source == "external";
-	if (opt_.odometry.enabled && odometry_.hasReference() && !externalToMap)
+	const bool external = r.prior_source == "external";
+	const std::string& stage = opt_.prior.external_stage;
+	r.external_stage = external ? (stage == "mapping" ? "mapping" : "odometry") : "";
+	if (opt_.odometry.enabled && odometry_.hasReference() && r.external_stage != "mapping")
 	{
 		r.odometry = odometry_.match(f, odom_ref_.inverse() * odom);
-		odom = odom_ref_ * r.odometry.T_prev_curr;
+		// auto: along a direction scan-to-scan hardly constrains (a corridor's axis) its result is
+		// whatever its nearest-neighbour matches drag it to; the external motion goes to
+		// scan-to-map unchanged then.
+		const bool degenerate = r.odometry.ok &&
+			weakTranslation(r.odometry.degeneracy, opt_.prior.min_translation_information, opt_.prior.min_weakest_ratio);
+		if (external && stage == "auto" && degenerate) r.external_stage = "mapping";
+		else odom = odom_ref_ * r.odometry.T_prev_curr;
 	}
 	r.ms.add("odometry", lapMs(t0));
 

@@ -140,6 +140,7 @@ ScanToScanOdometry::Result ScanToScanOdometry::match(const FeatureSet& curr, con
 	}
 	Matches m;
 	Eigen::Isometry3d T = guess;
+	Eigen::Matrix<double, 6, 6> JtJ = Eigen::Matrix<double, 6, 6>::Zero();
 	// A-LOAM stops after outer_iterations rounds, which only converges when the guess is close (a
 	// known velocity). From a zero guess at 1-3.5 m per frame each round closes part of the gap: the
 	// rounds go on while they still move the pose.
@@ -157,9 +158,11 @@ ScanToScanOdometry::Result ScanToScanOdometry::match(const FeatureSet& curr, con
 		const SolveReport rep = solvePose(m, opt_.solver, T);
 		res.iterations += rep.iterations;
 		res.rms = rep.rms;
+		JtJ = rep.JtJ;
 		++res.rounds;
 		if (roundConverged(before, T, opt_.solver)) break;  // the matches would not change
 	}
+	res.degeneracy = analyseDegeneracy(JtJ, 0);  // of the last round (no threshold: the caller decides)
 	res.T_prev_curr = T;
 	res.ok = true;
 	return res;

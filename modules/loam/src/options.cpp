@@ -134,7 +134,9 @@ void PriorOptions::declare(OptionTable& t)
 	t.add("max_rotation_deg", max_rotation_deg, "> 0", "external motion turning more is rejected [deg]");
 	t.add("max_deviation", max_deviation, "> 0", "external motion this far from constant velocity and from its own last motion is rejected [m]");
 	t.add("max_deviation_deg", max_deviation_deg, "> 0", "... or turning this differently [deg]");
-	t.add("external_stage", external_stage, "odometry | mapping", "odometry: the external motion initialises scan-to-scan | mapping: scan-to-map, scan-to-scan skipped");
+	t.add("external_stage", external_stage, "odometry | mapping | auto", "odometry: the external motion initialises scan-to-scan | mapping: scan-to-map, scan-to-scan skipped | auto: scan-to-scan unless its result is degenerate");
+	t.add("min_translation_information", min_translation_information, ">= 0", "auto: scan-to-scan is degenerate when the smallest eigenvalue of its translation information is below this [plane matches]");
+	t.add("min_weakest_ratio", min_weakest_ratio, "[0, 1]", "... or below this fraction of the next smallest (a corridor)");
 }
 
 std::vector<std::pair<std::string, OptionSet*>> LoamOptions::parts()

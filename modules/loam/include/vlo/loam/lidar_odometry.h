@@ -39,6 +39,8 @@ struct LidarOdometryResult
 	Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  ///< pose of this frame in the previous
 	Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();  ///< the prior's motion
 	std::string prior_source;  ///< constant_velocity | external | none
+	/// Where an external guess entered: odometry (scan-to-scan) | mapping (scan-to-map) | "" (none)
+	std::string external_stage;
 
 	std::size_t n_input = 0, n_valid = 0;  ///< points given / kept after preprocessing
 	int n_rings = 0;  ///< populated rings

@@ -9,6 +9,7 @@
 // A-LOAM does: the same point in practice, but the tree costs milliseconds to build every frame);
 // the line's second point is the closest on a nearby ring, the plane's second the closest on the
 // first one's ring and its third the closest on a nearby ring.
+#include <vlo/loam/degeneracy.h>
 #include <vlo/loam/kdtree.h>
 #include <vlo/loam/options.h>
 #include <vlo/loam/pose_solver.h>
@@ -34,6 +35,7 @@ class ScanToScanOdometry
 		int iterations = 0;  ///< Ceres iterations over all rounds
 		int n_edges = 0, n_planes = 0;  ///< matches of the last round
 		double rms = 0;  ///< distance RMS at the solution [m]
+		Degeneracy degeneracy;  ///< of the last round's J^T J at the solution
 	};
 
 	ScanToScanOdometry(const OdometryOptions& o, const RingModel& rings);

@@ -127,8 +127,17 @@ struct PriorOptions : public OptionSet
 	double max_deviation_deg = 3.0;  ///< ... or turning this much differently [deg]
 	/// Where an accepted external motion enters: "odometry" = it initialises scan-to-scan odometry,
 	/// whose result initialises scan-to-map (A-LOAM's chain, the constant-velocity guess replaced);
-	/// "mapping" = it initialises scan-to-map directly and scan-to-scan is skipped for that frame.
-	std::string external_stage = "odometry";
+	/// "mapping" = it initialises scan-to-map directly and scan-to-scan is skipped for that frame;
+	/// "auto" = per frame: scan-to-scan runs from it, and where its result is degenerate (below) the
+	/// external motion initialises scan-to-map instead.
+	std::string external_stage = "auto";
+	/// auto: scan-to-scan is degenerate when the smallest eigenvalue of its translation information
+	/// (J^T J with the rotation marginalised; doc/LOAM.md) is below this, i.e. fewer than this many
+	/// unit-weight plane matches' worth of constraint along its weakest direction ...
+	double min_translation_information = 150;
+	/// ... or below this fraction of the next smallest: one direction distinctly weaker than the
+	/// others, as along a corridor.
+	double min_weakest_ratio = 0.5;
 
    protected:
 	void declare(OptionTable& t) override;

@@ -1,20 +1,36 @@
 #!/usr/bin/env bash
-# The same run twice (mode vlo, a short simulated drive) gives byte-identical outputs: trajectories, map.pcd,
-# run.ini, and frames.csv and summary.json apart from their timing (ms_* columns; seconds, ms_per_frame and the stage_timings figures).
+# The same run with one thread, with two, and with two again (modes vlo and lo, a short simulated drive) gives
+# byte-identical outputs: trajectories, map.pcd, run.ini (apart from its threads line), and frames.csv and
+# summary.json apart from their timing (ms_* columns; seconds, ms_per_frame and the stage_timings figures).
 set -u
 BIN="${VLO_BIN:?}"
 INI="${VLO_SRC:?}/ini"
 . "$VLO_SRC/tests/e2e/lib/common.sh"
 
 "$BIN/vlo-sim" --frames 40 --seed 9 --out drive.rawlog --quiet || fail "vlo-sim"
-for r in a b; do
-	"$BIN/vlo-run" --rawlog drive.rawlog --ini "$INI/sim-hdl64.ini" --out $r --quiet --set pipeline.mode=vlo \
-		--set pipeline.snapshots=false > /dev/null || fail "vlo-run $r"
-done
-for f in trajectory_vlo.tum trajectory_vo.tum map.pcd run.ini; do
-	[ -s a/$f ] || fail "$f missing"
-	cmp -s a/$f b/$f || fail "$f differs between two identical runs"
-done
+# run NAME MODE THREADS
+run() {
+	"$BIN/vlo-run" --rawlog drive.rawlog --ini "$INI/sim-hdl64.ini" --out $1 --quiet --set pipeline.mode=$2 \
+		--set pipeline.threads=$3 --set pipeline.snapshots=false > /dev/null || fail "vlo-run $1"
+}
+run a vlo 1
+run b vlo 2
+run c vlo 2
+run lo1 lo 1
+run lo2 lo 2
+# same A B FILE...: the files are byte-identical in runs A and B
+same() {
+	local a=$1 b=$2
+	shift 2
+	for f in "$@"; do
+		[ -s $a/$f ] || fail "$a/$f missing"
+		cmp -s $a/$f $b/$f || fail "$f differs between runs $a and $b"
+	done
+}
+same a b trajectory_vlo.tum trajectory_vo.tum map.pcd
+same b c trajectory_vlo.tum trajectory_vo.tum map.pcd run.ini
+same lo1 lo2 trajectory_lo.tum map.pcd
+cmp -s <(grep -v '^threads ' a/run.ini) <(grep -v '^threads ' b/run.ini) || fail "run.ini differs beyond threads"
 # frames.csv without the timing columns (ms_*): python's csv module, as frames.csv quotes cells with commas.
 untimed() {
 	python3 - "$1" <<'PY'
@@ -26,8 +42,13 @@ for row in rows:
 PY
 }
 [ "$(untimed a/frames.csv | head -1 | tr ',' '\n' | grep -c .)" -ge 20 ] || fail "frames.csv has too few columns"
-cmp -s <(untimed a/frames.csv) <(untimed b/frames.csv) || fail "frames.csv (timing columns apart) differs"
-grep -vE '"(seconds|ms_per_frame|mean_ms|p95_ms|max_ms)"' a/summary.json > a.json
-grep -vE '"(seconds|ms_per_frame|mean_ms|p95_ms|max_ms)"' b/summary.json | sed 's|"b/|"a/|' > b.json
-cmp -s a.json b.json || fail "summary.json (timing apart) differs: $(diff a.json b.json | head -4)"
+# untimed_json RUN: summary.json without its timing, the run's folder in paths named "run"
+untimed_json() { grep -vE '"(seconds|ms_per_frame|mean_ms|p95_ms|max_ms)"' $1/summary.json | sed "s|\"$1/|\"run/|"; }
+for pair in a:b b:c lo1:lo2; do
+	x=${pair%:*} y=${pair#*:}
+	cmp -s <(untimed $x/frames.csv) <(untimed $y/frames.csv) || fail "frames.csv (timing columns apart) differs: $x, $y"
+	untimed_json $x > x.json
+	untimed_json $y > y.json
+	cmp -s x.json y.json || fail "summary.json (timing apart) differs: $x, $y: $(diff x.json y.json | head -4)"
+done
 finish determinism

@@ -57,6 +57,14 @@ void FrameTable::setTimes(const std::string& prefix, const StageTimes& times)
 	for (const auto& [stage, ms] : times.stages()) set("ms_" + prefix + stage, ms, 2);
 }
 
+void FrameTable::setCells(const FrameTable& part)
+{
+	if (part.rows_.empty()) return;
+	const auto& row = part.rows_.back();
+	for (const auto& c : part.columns_)
+		if (const auto cell = row.find(c); cell != row.end()) set(c, cell->second);
+}
+
 std::vector<std::string> FrameTable::columns() const
 {
 	static const std::vector<std::string> leading{"frame", "t", "x", "y", "z"};

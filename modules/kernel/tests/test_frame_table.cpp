@@ -79,3 +79,28 @@ TEST(FrameTable, NoNegativeZero)
 	EXPECT_EQ(t.cell(0, "c"), "-0.001");
 	EXPECT_EQ(t.cell(0, "d"), "0");
 }
+
+TEST(FrameTable, SetCellsMergesOneTablePerStageInTheStagesOrder)
+{
+	FrameTable merged;
+	for (long long i = 0; i < 2; ++i)
+	{
+		FrameTable motion, lidar;  // what each stage wrote for frame i on its own thread
+		if (i == 1) motion.set("vo_late", 7LL);  // a column first seen at the second frame
+		motion.set("vo_state", std::string("first"));
+		motion.set("vo_state", std::string(i == 0 ? "INIT" : "OK"));  // the last value counts
+		lidar.set("lo_iterations", 3 + i);
+		merged.newRow();
+		merged.set("frame", i);
+		merged.setCells(motion);
+		merged.setCells(lidar);
+		merged.setCells(FrameTable());  // an empty part adds nothing
+	}
+	ASSERT_EQ(merged.rows(), 2u);
+	EXPECT_EQ(merged.columns(), (std::vector<std::string>{"frame", "vo_state", "vo_late", "lo_iterations"}));
+	EXPECT_EQ(merged.cell(0, "vo_state"), "INIT");
+	EXPECT_EQ(merged.cell(1, "vo_state"), "OK");
+	EXPECT_EQ(merged.cell(0, "vo_late"), "");
+	EXPECT_EQ(merged.cell(1, "vo_late"), "7");
+	EXPECT_EQ(merged.cell(1, "lo_iterations"), "4");
+}

@@ -1,5 +1,9 @@
 #include <vlo/pipeline/pipeline_options.h>
 
+#include <sched.h>
+
+#include <thread>
+
 namespace vlo
 {
 void PipelineOptions::declare(OptionTable& t)
@@ -20,6 +24,17 @@ void PipelineOptions::declare(OptionTable& t)
 	t.add("sample_frame_every", sample_frame_every, ">= 0", "projected-scan snapshot every N frames (0 = none)");
 	t.add("bootstrapping", bootstrapping, "true | false", "vlo: scale-corrected VO motion as LOAM's initial guess (false = A-LOAM)");
 	t.add("scale_snapshot_every", scale_snapshot_every, ">= 0", "vlo: scale-corrector snapshot every N frames (0 = none)");
+	t.add("threads", threads, "1 | 2 | auto", "1 = one thread; 2 = read ahead, and LiDAR odometry of frame i beside the motion source of i+1; auto = 2 with 2+ usable cores. Same outputs");
+}
+
+int PipelineOptions::threadCount() const
+{
+	if (threads != "auto") return threads == "2" ? 2 : 1;
+	// The cores this process may run on (taskset, cgroup cpusets), not those of the machine.
+	cpu_set_t cores;
+	const int usable = sched_getaffinity(0, sizeof(cores), &cores) == 0 ? CPU_COUNT(&cores)
+																		: static_cast<int>(std::thread::hardware_concurrency());
+	return usable >= 2 ? 2 : 1;
 }
 
 RunPlan PipelineOptions::plan() const

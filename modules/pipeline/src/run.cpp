@@ -4,9 +4,6 @@
 #include <vlo/core/progress.h>
 #include <vlo/core/stopwatch.h>
 #include <vlo/io/rawlog_reader.h>
-#include <vlo/io/undistort.h>
-#include <vlo/kernel/lidar_odometry.h>
-#include <vlo/kernel/motion_source.h>
 #include <vlo/kernel/scale_correction.h>
 #include <vlo/kernel/visual_odometry.h>
 #include <vlo/pipeline/global_map.h>
@@ -19,6 +16,8 @@
 #include <unistd.h>
 
 #include <filesystem>
+
+#include "frame_loop.h"
 
 namespace vlo
 {
@@ -43,12 +42,6 @@ void prepareOutputDir(const std::string& dir)
 	if (ec || !std::filesystem::is_directory(dir)) failInput(dir, "cannot create output folder");
 }
 
-/// The modules of a run, created by name and configured.
-struct Stages
-{
-	std::unique_ptr<MotionSource> motion;
-	std::unique_ptr<LidarOdometryModule> lidar;
-};
 
 /// One sensor INI serves every mode and every method: each registered module of a family loads and
 /// checks its sections, so that the sections of a module not chosen are no error and a typo is one
@@ -112,37 +105,7 @@ RunSummary runPipeline(const RunRequest& req)
 	GlobalMap globalMap(popt.map_voxel, popt.map_max_range);
 	ProgressLine progress("vlo-run: frame", 0);
 	const auto loopStart = SteadyClock::now();
-	Frame frame;
-	ImageUndistorter undistorter;  // the camera's estimators and snapshots see ideal pinhole images
-	while ((popt.max_frames == 0 || outputs.table.rows() < std::size_t(popt.max_frames)) && reader.next(frame))
-	{
-		auto& table = outputs.table;
-		table.newRow();
-		table.set("frame", static_cast<long long>(frame.index));
-		table.set("t", frame.t, 6);
-		const auto t0 = SteadyClock::now();
-		std::optional<Eigen::Isometry3d> motion;  // of the vehicle since the previous frame
-		if (stages.motion)
-		{
-			undistorter.apply(frame);
-			motion = stages.motion->process(frame, table);
-		}
-		if (stages.lidar)
-		{
-			if (stages.motion) table.set("vo_metric_motion", motion.has_value());
-			const Eigen::Isometry3d pose =
-				stages.lidar->process(frame, plan.bootstrapping ? motion : std::nullopt, table);
-			outputs.lidar.push_back({frame.t, pose});
-			if (popt.map_every > 0 && frame.index % popt.map_every == 0)
-				globalMap.insert(frame.scan, pose * frame.rig.vehicle_T_lidar);
-			table.set("x", pose.translation().x(), 3);
-			table.set("y", pose.translation().y(), 3);
-			table.set("z", pose.translation().z(), 3);
-		}
-		table.set("ms_total", msSince(t0), 2);
-		if (popt.sample_frame_every > 0 && frame.index % popt.sample_frame_every == 0) outputs.addSampleFrame(frame);
-		progress.update(table.rows(), reader.progress());
-	}
+	runFrames(reader, stages, popt, plan, outputs, globalMap, progress);
 	progress.finish();
 	const double loopSeconds = msSince(loopStart) / 1000.0;
 	if (outputs.table.rows() == 0) failInput(req.rawlog, "no frame to process");

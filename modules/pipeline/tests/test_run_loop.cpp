@@ -3,12 +3,13 @@
 // what lands in frames.csv and the trajectories. The fakes move the vehicle 0.5 m forward per frame.
 #include <gtest/gtest.h>
 #include <vlo/core/error.h>
-#include <vlo/io/rawlog_writer.h>
 #include <vlo/io/trajectory.h>
 #include <vlo/kernel/lidar_odometry.h>
 #include <vlo/kernel/scale_correction.h>
 #include <vlo/kernel/visual_odometry.h>
 #include <vlo/pipeline/run.h>
+
+#include "small_drive.h"
 
 #include <nlohmann/json.hpp>
 
@@ -127,21 +128,31 @@ class FakeLidar : public LidarOdometryModule
 };
 VLO_REGISTER_MODULE(LidarOdometryModule, "fake_lidar", FakeLidar);
 
-/// Camera looking along the vehicle's x axis (z forward, x right, y down), with a lever arm.
-SensorRig rig()
+/// Fails at frame 3 (with two threads, while the motion source works on frame 4).
+class FailingLidar : public FakeLidar
 {
-	SensorRig r;
-	r.has_camera = r.has_lidar = true;
-	r.camera.fx = r.camera.fy = 20;
-	r.camera.cx = 16;
-	r.camera.cy = 12;
-	r.camera.width = 32;
-	r.camera.height = 24;
-	r.vehicle_T_camera.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-	r.vehicle_T_camera.translation() << 1.5, 0.1, 1.6;
-	r.vehicle_T_lidar.translation() << 0.3, 0, 1.8;
-	return r;
-}
+   public:
+	Eigen::Isometry3d process(
+		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	{
+		if (frame.index == 3) failInput("lidar", "fails at frame 3");
+		return FakeLidar::process(frame, vehicle_motion, table);
+	}
+};
+VLO_REGISTER_MODULE(LidarOdometryModule, "failing_lidar", FailingLidar);
+
+/// Fails at frame 4.
+class FailingMonoVo : public FakeMonoVo
+{
+   public:
+	VisualOdometryStep process(const Frame& frame, FrameTable& table) override
+	{
+		if (frame.index == 4) failInput("vo", "fails at frame 4");
+		return FakeMonoVo::process(frame, table);
+	}
+};
+VLO_REGISTER_MODULE(VisualOdometryModule, "failing_mono", FailingMonoVo);
+
 
 class RunLoop : public ::testing::Test
 {
@@ -153,20 +164,7 @@ class RunLoop : public ::testing::Test
 		dir_ = std::filesystem::absolute(std::string("run_loop_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
 		std::filesystem::remove_all(dir_);
 		std::filesystem::create_directories(dir_);
-		RawlogWriter w(dir_ + "/drive.rawlog", false);
-		for (int i = 0; i < kFrames; ++i)
-		{
-			Frame f;
-			f.index = std::size_t(i);
-			f.t = 0.1 * i;
-			f.has_image = f.has_scan = true;
-			f.image = mrpt::img::CImage(32, 24, mrpt::img::CH_GRAY);
-			f.image.filledRectangle(0, 0, 31, 23, mrpt::img::TColor(100, 100, 100));
-			f.scan = {{5.f, 0.f, 0.f, 1.f}, {0.f, 5.f, 0.f, 1.f}, {5.f, 5.f, 1.f, 1.f}};
-			f.rig = rig();
-			w.writeFrame(f);
-		}
-		w.commit();
+		test::writeSmallDrive(dir_ + "/drive.rawlog", kFrames, test::smallRig());
 	}
 	void TearDown() override { std::filesystem::remove_all(dir_); }
 
@@ -332,4 +330,50 @@ TEST_F(RunLoop, BadModuleNamesAreInputErrors)
 	EXPECT_NE(runError({"pipeline.mode=vlo", "pipeline.visual_odometry=fake_stereo"}).find("'fake_stereo' is not a monocular VO"),
 		std::string::npos);
 	EXPECT_FALSE(std::filesystem::exists(out("frames.csv")));
+}
+
+TEST_F(RunLoop, OneAndTwoThreadsGiveTheSameOutputs)
+{
+	std::vector<std::string> csv;
+	for (const char* threads : {"1", "2"})
+	{
+		seen = {};
+		std::filesystem::remove_all(out(""));
+		run({"pipeline.mode=vlo", std::string("pipeline.threads=") + threads});
+		EXPECT_EQ(seen.scale_prev_index, (std::vector<long>{-1, 0, 1, 2, 3, 4})) << threads;
+		ASSERT_EQ(seen.lidar_guesses.size(), std::size_t(kFrames));
+		EXPECT_NEAR(seen.lidar_guesses[4]->translation().x(), 0.55, 1e-12) << threads;
+		std::string text;
+		const auto names = header(out("frames.csv"));
+		for (const auto& name : names)
+			if (name.rfind("ms_", 0) != 0) text += name + ":" + [&] {
+				std::string cells;
+				for (const auto& c : column(out("frames.csv"), name)) cells += c + ",";
+				return cells;
+			}() + "\n";
+		csv.push_back(text);
+	}
+	EXPECT_EQ(csv[0], csv[1]);
+	EXPECT_NE(csv[0].find("vo_fake:0,1,2,3,4,5,"), std::string::npos) << csv[0];
+}
+
+TEST_F(RunLoop, AFailingModuleStopsTheRunWithItsErrorWhateverTheThreads)
+{
+	for (const char* threads : {"1", "2"})
+	{
+		const std::string t = std::string("pipeline.threads=") + threads;
+		std::filesystem::remove_all(out(""));
+		EXPECT_NE(runError({"pipeline.mode=vlo", t, "pipeline.lidar_odometry=failing_lidar"}).find("fails at frame 3"),
+			std::string::npos) << threads;
+		EXPECT_NE(runError({"pipeline.mode=vlo", t, "pipeline.visual_odometry=failing_mono"}).find("fails at frame 4"),
+			std::string::npos) << threads;
+		// Both: the LiDAR odometry of frame 3 fails first, as in a serial run, though with two threads the
+		// motion source of frame 4 fails at the same time.
+		EXPECT_NE(runError({"pipeline.mode=vlo", t, "pipeline.lidar_odometry=failing_lidar",
+					  "pipeline.visual_odometry=failing_mono"})
+					  .find("fails at frame 3"),
+			std::string::npos) << threads;
+		EXPECT_NE(runError({"pipeline.mode=vlo", t, "pipeline.threads=3"}).find("threads"), std::string::npos);
+		EXPECT_FALSE(std::filesystem::exists(out("frames.csv")));
+	}
 }

@@ -22,6 +22,10 @@ class FrameTable
 	void set(const std::string& column, bool value) { set(column, std::string(value ? "1" : "0")); }
 	/// One column ms_<prefix><stage> per stage, in the stages' order, 2 decimals.
 	void setTimes(const std::string& prefix, const StageTimes& times);
+	/// Sets the cells of `part`'s last row in the current row, in the order `part` first saw its
+	/// columns: a stage that ran on another thread wrote into a table of its own (one per frame), and
+	/// merging it in the stages' order gives the table the serial run would have made.
+	void setCells(const FrameTable& part);
 
 	std::size_t rows() const { return rows_.size(); }
 	/// In the CSV's order: the leading columns, then modules by the order each first wrote (a module

@@ -39,6 +39,13 @@ struct PipelineOptions : public OptionSet
 	/// A-LOAM baseline inside a vlo run, for the ablation).
 	bool bootstrapping = true;
 	int scale_snapshot_every = 0;  ///< mode vlo: a scale-corrector snapshot every N frames (0 = none)
+	/// 1: everything on one thread; 2: frames read ahead on a thread, and the LiDAR odometry of frame i
+	/// beside the motion source of frame i+1; auto: 2 when the process may use two cores or more.
+	/// The outputs are the same whatever the count (doc/SPEED.md).
+	std::string threads = "auto";
+
+	/// The count `threads` stands for: 1 or 2.
+	int threadCount() const;
 
 	RunPlan plan() const;
 	/// The module names a motion source composes.

@@ -1,0 +1,29 @@
+#pragma once
+// The frame loop of a run: each frame through the motion source, then the LiDAR odometry, into the
+// run's outputs; with two threads, reading ahead and the two stages of consecutive frames side by side.
+#include <vlo/core/progress.h>
+#include <vlo/io/rawlog_reader.h>
+#include <vlo/kernel/lidar_odometry.h>
+#include <vlo/kernel/motion_source.h>
+#include <vlo/pipeline/global_map.h>
+#include <vlo/pipeline/pipeline_options.h>
+#include <vlo/pipeline/run_outputs.h>
+
+#include <memory>
+
+namespace vlo
+{
+/// The modules of a run, created by name and configured.
+struct Stages
+{
+	std::unique_ptr<MotionSource> motion;
+	std::unique_ptr<LidarOdometryModule> lidar;
+};
+
+/// Runs the reader's frames (up to [pipeline] max_frames) through the stages: one row of
+/// outputs.table per frame, outputs.lidar, the sample frames, and the scans of map.pcd into `map`.
+/// With [pipeline] threads 2 the outputs are the same as with 1 (doc/SPEED.md). Returns once every
+/// thread it started has ended, also when it throws.
+void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const RunPlan& plan,
+	RunOutputs& outputs, GlobalMap& map, ProgressLine& progress);
+}  // namespace vlo

@@ -66,16 +66,8 @@ TEST(OptionTable, SavesAsMrptsMacrosDo)
 TEST(OptionTable, RefusesWrongTypesAndRangesNamingSectionAndKey)
 {
 	EXPECT_EQ(loadError("[s]\ngain = 0.5\ncount = 7\non = no\nmode = slow\ntable = [10 20 30]\n"), "");
-	EXPECT_EQ(loadError("[s]\ngain = abc\n"), "[s] gain: expects a number, got 'abc'");
-	EXPECT_EQ(loadError("[s]\ngain = nan\n"), "[s] gain: expects a finite number, got 'nan'");
-	EXPECT_EQ(loadError("[s]\ngain = 0\n"), "[s] gain: must be in (0, 1]");
-	EXPECT_EQ(loadError("[s]\ncount = 1.5\n"), "[s] count: expects an integer, got '1.5'");
-	EXPECT_EQ(loadError("[s]\ncount = 99999999999\n"), "[s] count: the integer '99999999999' is out of range");
-	EXPECT_EQ(loadError("[s]\ncount = 0\n"), "[s] count: must be >= 1");
-	EXPECT_EQ(loadError("[s]\non = maybe\n"), "[s] on: expects true or false, got 'maybe'");
-	EXPECT_EQ(loadError("[s]\nmode = slwo\n"), "[s] mode: 'slwo' is not one of fast, slow (did you mean slow?)");
-	EXPECT_EQ(loadError("[s]\ntable = [1 x]\n"), "[s] table: expects a list of numbers like [1.5 -2 3], got '[1 x]'");
-	EXPECT_EQ(loadError("[s]\ntable = [1 95]\n"), "[s] table: each value must be in (-90, 90)");
+	for (const auto& [line, problem] : test::kRefusedDemoLines)
+		EXPECT_EQ(loadError("[s]\n" + line + "\n"), "[s] " + test::keyOf(line) + ": " + problem);
 }
 
 TEST(OptionTable, ValidatesValuesSetInCodeAndListsItsRows)

@@ -12,7 +12,7 @@
 int main(int argc, char** argv)
 {
 	return vlo::runApp("vlo-batch", [&] {
-		const auto parsed = vlo::parseAppCommandLine(argc, argv, 1,
+		const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 1,
 			{{"plan", "PLAN.ini", "experiment plan, e.g. ini/experiments/paper-table.ini"},
 				{"out", "DIR", "output folder: plan.ini, runs/, results.md, results.csv, snapshots/"},
 				{"data", "DIR", "folder of the plan's rawlogs (default: the plan's [plan] data)"},
@@ -27,8 +27,6 @@ int main(int argc, char** argv)
 			"Runs every sequence of the plan under every configuration (vlo-sim for missing sequences,\n"
 			"vlo-run, vlo-eval), or writes them as shell lines for GNU parallel or a Slurm array, and\n"
 			"tabulates the results in DIR/results.md and DIR/results.csv. See doc/BATCH.md.");
-		if (!parsed) return 0;
-		const vlo::CommandLine& cl = *parsed;
 		if (cl.has("collect"))
 		{
 			for (const char* o : {"plan", "out", "data", "jobs", "emit-jobs", "emit-data", "bin"})

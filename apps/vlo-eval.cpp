@@ -32,7 +32,7 @@ std::vector<double> parseLengths(const std::string& s)
 
 int run(int argc, char** argv)
 {
-	const auto parsed = vlo::parseAppCommandLine(argc, argv, 1,
+	const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 1,
 		{{"gt", "GT.tum", "ground truth (TUM, vehicle frame)", true},
 			{"est", "EST.tum", "estimated trajectory (TUM, vehicle frame)", true},
 			{"metric", "kitti|ate|rpe|all", "metrics to compute (default all)"},
@@ -49,8 +49,6 @@ int run(int argc, char** argv)
 		"Scores an estimated trajectory against ground truth: the KITTI odometry metric and\n"
 		"ATE/ARE after Umeyama alignment, and the frame-to-frame relative pose error. See\n"
 		"doc/EVALUATION.md.");
-	if (!parsed) return 0;
-	const vlo::CommandLine& cl = *parsed;
 	EvalOptions opts;
 	opts.gt_name = cl.get("gt");
 	opts.est_name = cl.get("est");

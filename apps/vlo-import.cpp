@@ -23,6 +23,21 @@ const char* kTopUsage =
 	"  rosbag           ROS 1 bags: PointCloud2 + Image/CompressedImage + CameraInfo (+ tf, ground truth)\n\n"
 	"Run 'vlo-import <subcommand> --help' for its options.\n";
 
+/// A subcommand's options followed by those every subcommand has: the sensor labels in the rawlog.
+std::vector<vlo::CliOption> withLabelOptions(std::vector<vlo::CliOption> options)
+{
+	options.push_back({"camera-label", "L", "sensor label of the images (default CAMERA)"});
+	options.push_back({"lidar-label", "L", "sensor label of the scans (default LIDAR)"});
+	return options;
+}
+
+template <class Import>
+void readLabels(const vlo::CommandLine& cl, Import& opt)
+{
+	opt.camera_label = cl.get("camera-label", opt.camera_label);
+	opt.lidar_label = cl.get("lidar-label", opt.lidar_label);
+}
+
 void report(const vlo::ImportSummary& s)
 {
 	for (const auto& w : s.warnings) vlo::logger().logStr(mrpt::system::LVL_WARN, w);
@@ -33,19 +48,15 @@ void report(const vlo::ImportSummary& s)
 
 int kittiOdometry(int argc, char** argv)
 {
-	const auto parsed = vlo::parseAppCommandLine(argc, argv, 2,
-		{{"root", "DIR", "dataset root holding sequences/ and poses/", true},
+	const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 2,
+		withLabelOptions({{"root", "DIR", "dataset root holding sequences/ and poses/", true},
 			{"seq", "NN", "sequence number as in the folder name, e.g. 06", true},
 			{"out", "FILE.rawlog", "output rawlog; ground truth goes to FILE.gt.tum", true},
 			{"first", "I", "first frame (default 0)"}, {"last", "J", "last frame, inclusive (default: the last)"},
-			{"camera", "X", "camera 0..3: image_X with PX (default 0; 2 = left colour, stored grayscale)"},
-			{"camera-label", "L", "sensor label of the images (default CAMERA)"},
-			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}},
+			{"camera", "X", "camera 0..3: image_X with PX (default 0; 2 = left colour, stored grayscale)"}}),
 		"Usage: vlo-import kitti-odometry --root ROOT --seq NN --out FILE.rawlog [options]\n"
 		"Camera X (image_X, PX) + Velodyne; vehicle frame = Velodyne frame. Without velodyne/ or\n"
 		"without Tr in calib.txt the rawlog is camera-only (with a warning).");
-	if (!parsed) return 0;
-	const vlo::CommandLine& cl = *parsed;
 	vlo::KittiOdometryImport opt;
 	opt.root = cl.get("root");
 	opt.seq = cl.get("seq");
@@ -53,40 +64,34 @@ int kittiOdometry(int argc, char** argv)
 	opt.first = cl.getInt("first", 0);
 	opt.last = cl.getInt("last", -1);
 	opt.camera = static_cast<int>(cl.getInt("camera", 0));
-	opt.camera_label = cl.get("camera-label", opt.camera_label);
-	opt.lidar_label = cl.get("lidar-label", opt.lidar_label);
+	readLabels(cl, opt);
 	report(vlo::importKittiOdometry(opt));
 	return 0;
 }
 
 int kittiRaw(int argc, char** argv)
 {
-	const auto parsed = vlo::parseAppCommandLine(argc, argv, 2,
-		{{"drive", "DIR", "drive folder holding image_0X/data and velodyne_points/data", true},
+	const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 2,
+		withLabelOptions({{"drive", "DIR", "drive folder holding image_0X/data and velodyne_points/data", true},
 			{"calib", "DIR", "folder holding calib_cam_to_cam.txt and calib_velo_to_cam.txt", true},
 			{"out", "FILE.rawlog", "output rawlog", true},
-			{"camera", "X", "camera 0..3 (default 2; colour images are stored grayscale)"},
-			{"camera-label", "L", "sensor label of the images (default CAMERA)"},
-			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}},
+			{"camera", "X", "camera 0..3 (default 2; colour images are stored grayscale)"}}),
 		"Usage: vlo-import kitti-raw --drive DIR --calib DIR --out FILE.rawlog [options]\n"
 		"Rectified camera X + Velodyne; projection P_rect_0X * R_rect_00 * Tr_velo_to_cam.\n"
 		"Times from image_0X/timestamps.txt and velodyne_points/timestamps.txt, else 10 Hz from 0.");
-	if (!parsed) return 0;
-	const vlo::CommandLine& cl = *parsed;
 	vlo::KittiRawImport opt;
 	opt.drive = cl.get("drive");
 	opt.calib = cl.get("calib");
 	opt.out = cl.get("out");
 	opt.camera = static_cast<int>(cl.getInt("camera", 2));
-	opt.camera_label = cl.get("camera-label", opt.camera_label);
-	opt.lidar_label = cl.get("lidar-label", opt.lidar_label);
+	readLabels(cl, opt);
 	report(vlo::importKittiRaw(opt));
 	return 0;
 }
 int rosbag(int argc, char** argv)
 {
-	const auto parsed = vlo::parseAppCommandLine(argc, argv, 2,
-		{{"bag", "FILE.bag", "input bag (repeat for a recording split into several bags)", true, true},
+	const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 2,
+		withLabelOptions({{"bag", "FILE.bag", "input bag (repeat for a recording split into several bags)", true, true},
 			{"list", "", "print every topic with its type, message count and rate, and stop"},
 			{"lidar-topic", "TOPIC", "sensor_msgs/PointCloud2 topic"},
 			{"image-topic", "TOPIC", "sensor_msgs/Image or sensor_msgs/CompressedImage topic"},
@@ -96,14 +101,11 @@ int rosbag(int argc, char** argv)
 			{"gt-topic", "TOPIC", "nav_msgs/Odometry, geometry_msgs/PoseStamped or PointStamped -> FILE.gt.tum"},
 			{"vehicle-frame", "FRAME", "tf frame to use as vehicle frame (default: the LiDAR's frame)"},
 			{"reorder-window", "S", "seconds of header stamps held to sort messages (default 1)"},
-			{"out", "FILE.rawlog", "output rawlog"}, {"camera-label", "L", "sensor label of the images (default CAMERA)"},
-			{"lidar-label", "L", "sensor label of the scans (default LIDAR)"}},
+			{"out", "FILE.rawlog", "output rawlog"}}),
 		"Usage: vlo-import rosbag --bag FILE.bag [--bag MORE.bag ...] --list\n"
 		"       vlo-import rosbag --bag FILE.bag [--bag ...] --lidar-topic TOPIC --image-topic TOPIC\n"
 		"                         [--camera-info-topic TOPIC] [--extrinsics FILE.yaml] [--gt-topic TOPIC] --out FILE.rawlog\n"
 		"Messages are written in header-stamp order with their own stamps; see doc/ROSBAG.md.");
-	if (!parsed) return 0;
-	const vlo::CommandLine& cl = *parsed;
 	if (cl.has("list"))
 	{
 		vlo::listRosbagTopics(cl.getAll("bag"), std::cout);
@@ -122,8 +124,7 @@ int rosbag(int argc, char** argv)
 	opt.vehicle_frame = cl.get("vehicle-frame");
 	opt.reorder_window = cl.getDouble("reorder-window", opt.reorder_window);
 	opt.out = cl.get("out");
-	opt.camera_label = cl.get("camera-label", opt.camera_label);
-	opt.lidar_label = cl.get("lidar-label", opt.lidar_label);
+	readLabels(cl, opt);
 	const auto s = vlo::importRosbag(opt);
 	for (const auto& w : s.warnings) vlo::logger().logStr(mrpt::system::LVL_WARN, w);
 	const double mb = s.bag_bytes / 1e6;

@@ -8,7 +8,7 @@
 int main(int argc, char** argv)
 {
 	return vlo::runApp("vlo-run", [&] {
-		const auto cl = vlo::parseAppCommandLine(argc, argv, 1,
+		const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 1,
 			{{"rawlog", "FILE", "input MRPT rawlog (CAMERA + LIDAR observations)", true, false},
 				{"ini", "INI", "configuration, e.g. ini/sim-hdl64.ini", true, false},
 				{"out", "DIR", "output folder (created)", true, false},
@@ -17,8 +17,7 @@ int main(int argc, char** argv)
 				{"overwrite", "", "replace the run that DIR holds (only its files)", false, false}},
 			"usage: vlo-run --rawlog FILE --ini INI --out DIR [--set section.key=value ...] [--gt GT.tum] [--overwrite]\n\n"
 			"Writes trajectory_<mode>.tum, frames.csv, map.pcd, run.ini, summary.json and snapshots/ in DIR.");
-		if (!cl) return 0;
-		vlo::RunRequest req{cl->get("rawlog"), cl->get("ini"), cl->get("out"), cl->getAll("set"), cl->get("gt"), cl->has("overwrite")};
+		vlo::RunRequest req{cl.get("rawlog"), cl.get("ini"), cl.get("out"), cl.getAll("set"), cl.get("gt"), cl.has("overwrite")};
 		const auto s = vlo::runPipeline(req);
 		std::printf("vlo-run: %zu frames in %.1f s (%.1f ms/frame), path %.1f m, largest step %.2f m -> %s/%s\n", s.frames,
 			s.seconds, s.ms_per_frame, s.path_length_m, s.max_step_m, req.out.c_str(), s.final_trajectory.c_str());

@@ -12,7 +12,7 @@
 int main(int argc, char** argv)
 {
 	return vlo::runApp("vlo-sim", [&] {
-		const auto parsed = vlo::parseAppCommandLine(argc, argv, 1,
+		const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 1,
 			{{"scenario", "NAME", "urban | trees | corridor (default urban)"},
 				{"lidar", "MODEL", "hdl64 | vlp16 (default hdl64)"},
 				{"frames", "N", "number of 10 Hz frames (default 100)"},
@@ -30,8 +30,6 @@ int main(int argc, char** argv)
 			"vlo-sim --out FILE.rawlog [options]\n\n"
 			  "Renders a seeded procedural drive headless: a grayscale camera (KITTI intrinsics) and a\n"
 			  "spinning LiDAR, 10 Hz, with ground truth in FILE.gt.tum (vehicle frame, relative to frame 0).");
-		if (!parsed) return 0;
-		const vlo::CommandLine& cl = *parsed;
 		vlo::sim::SimConfig cfg;
 		cfg.scenario = vlo::sim::parseScenario(cl.get("scenario", "urban"));
 		cfg.lidar = vlo::sim::lidarByName(cl.get("lidar", "hdl64"));

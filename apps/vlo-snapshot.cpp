@@ -77,7 +77,7 @@ void projectedFrames(
 
 int run(int argc, char** argv)
 {
-	const auto parsed = vlo::parseAppCommandLine(argc, argv, 1,
+	const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 1,
 		{{"traj", "A.tum", "estimated trajectory (TUM, vehicle frame of frame 0)", false, true},
 			{"name", "NAME", "legend name of the matching --traj, in order (default: file name)", false, true},
 			{"gt", "GT.tum", "ground truth (TUM), drawn in grey"},
@@ -91,8 +91,6 @@ int run(int argc, char** argv)
 		  "Writes DIR/topdown.png (trajectories, from above), DIR/map3d.png (map with\n"
 		  "trajectories, oblique) and DIR/frame_K.png (image with the LiDAR scan projected).\n"
 		  "Headless: no display is needed. See doc/SNAPSHOTS.md.");
-	if (!parsed) return 0;
-	const vlo::CommandLine& cl = *parsed;
 	const auto trajFiles = cl.getAll("traj"), names = cl.getAll("name");
 	if (names.size() > trajFiles.size())
 		failInput("--name",

@@ -5,7 +5,7 @@
 
 namespace vlo
 {
-std::optional<CommandLine> parseAppCommandLine(
+CommandLine parseAppCommandLine(
 	int argc, char** argv, int first, std::vector<CliOption> options, const std::string& synopsis)
 {
 	options.push_back({"verbose", "", "debug messages too"});
@@ -14,7 +14,7 @@ std::optional<CommandLine> parseAppCommandLine(
 	if (cl.helpRequested())
 	{
 		std::cout << cl.usage(synopsis);
-		return std::nullopt;
+		throw HelpShown{};
 	}
 	setVerbosity(cl.has("verbose"), cl.has("quiet"));
 	return cl;

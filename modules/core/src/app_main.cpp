@@ -1,3 +1,4 @@
+#include <vlo/core/app_cli.h>
 #include <vlo/core/app_main.h>
 #include <vlo/core/error.h>
 #include <vlo/core/interrupt.h>
@@ -14,6 +15,10 @@ int runApp(const std::string& app, const std::function<int()>& body)
 	try
 	{
 		return body();
+	}
+	catch (const HelpShown&)
+	{
+		return 0;
 	}
 	catch (const Interrupted& e)
 	{

@@ -1,42 +1,16 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <vlo/core/option_table.h>
+#include <vlo_test/demo_options.h>
 
 using namespace vlo;
 
 namespace
 {
-struct Demo : public OptionSet
-{
-	double gain = 0.25;
-	int count = 3;
-	bool on = true;
-	std::string mode = "fast";
-	std::vector<double> table{1.5, -2};
-
-   protected:
-	void declare(OptionTable& t) override
-	{
-		t.add("gain", gain, "(0, 1]", "a gain");
-		t.add("count", count, ">= 1", "how many");
-		t.add("on", on, "true | false", "switch");
-		t.add("mode", mode, "fast | slow", "speed");
-		t.add("table", table, "(-90, 90)", "angles [deg]");
-	}
-};
-
+/// The message of loading `ini`'s section [s] into DemoOptions.
 std::string loadError(const std::string& ini)
 {
-	Demo d;
-	try
-	{
-		d.loadFromConfigFile(mrpt::config::CConfigFileMemory(ini), "s");
-	}
-	catch (const OptionError& e)
-	{
-		return e.what();
-	}
-	return "";
+	return test::errorOf([&] { test::DemoOptions().loadFromConfigFile(mrpt::config::CConfigFileMemory(ini), "s"); });
 }
 }  // namespace
 
@@ -60,7 +34,7 @@ TEST(Range, ParsesWhatTheDocsShow)
 TEST(OptionTable, SavesAsMrptsMacrosDo)
 {
 	// The effective run.ini keeps MRPT's layout: same padding, same value text, the help as comment.
-	Demo d;
+	test::DemoOptions d;
 	mrpt::config::CConfigFileMemory ours, mrpts;
 	d.saveToConfigFile(ours, "s");
 	{
@@ -79,7 +53,7 @@ TEST(OptionTable, SavesAsMrptsMacrosDo)
 	}
 	EXPECT_EQ(ours.getContent(), mrpts.getContent());
 	// ... and reads back what it wrote.
-	Demo e;
+	test::DemoOptions e;
 	e.gain = 0.5, e.count = 9, e.on = false, e.mode = "slow", e.table.clear();
 	e.loadFromConfigFile(mrpt::config::CConfigFileMemory(ours.getContent()), "s");  // as run.ini is read
 	EXPECT_DOUBLE_EQ(e.gain, 0.25);
@@ -92,25 +66,17 @@ TEST(OptionTable, SavesAsMrptsMacrosDo)
 TEST(OptionTable, RefusesWrongTypesAndRangesNamingSectionAndKey)
 {
 	EXPECT_EQ(loadError("[s]\ngain = 0.5\ncount = 7\non = no\nmode = slow\ntable = [10 20 30]\n"), "");
-	EXPECT_EQ(loadError("[s]\ngain = abc\n"), "[s] gain: expects a number, got 'abc'");
-	EXPECT_EQ(loadError("[s]\ngain = nan\n"), "[s] gain: expects a finite number, got 'nan'");
-	EXPECT_EQ(loadError("[s]\ngain = 0\n"), "[s] gain: must be in (0, 1]");
-	EXPECT_EQ(loadError("[s]\ncount = 1.5\n"), "[s] count: expects an integer, got '1.5'");
-	EXPECT_EQ(loadError("[s]\ncount = 99999999999\n"), "[s] count: the integer '99999999999' is out of range");
-	EXPECT_EQ(loadError("[s]\ncount = 0\n"), "[s] count: must be >= 1");
-	EXPECT_EQ(loadError("[s]\non = maybe\n"), "[s] on: expects true or false, got 'maybe'");
-	EXPECT_EQ(loadError("[s]\nmode = slwo\n"), "[s] mode: 'slwo' is not one of fast, slow (did you mean slow?)");
-	EXPECT_EQ(loadError("[s]\ntable = [1 x]\n"), "[s] table: expects a list of numbers like [1.5 -2 3], got '[1 x]'");
-	EXPECT_EQ(loadError("[s]\ntable = [1 95]\n"), "[s] table: each value must be in (-90, 90)");
+	for (const auto& [line, problem] : test::kRefusedDemoLines)
+		EXPECT_EQ(loadError("[s]\n" + line + "\n"), "[s] " + test::keyOf(line) + ": " + problem);
 }
 
 TEST(OptionTable, ValidatesValuesSetInCodeAndListsItsRows)
 {
-	Demo d;
+	test::DemoOptions d;
 	EXPECT_NO_THROW(d.validate());
 	d.count = 0;
 	EXPECT_THROW(d.validate(), OptionError);
-	const auto rows = Demo().rows();
+	const auto rows = test::DemoOptions().rows();
 	ASSERT_EQ(rows.size(), 5u);
 	EXPECT_EQ(rows[0].key, "gain");
 	EXPECT_EQ(rows[0].allowed, "(0, 1]");

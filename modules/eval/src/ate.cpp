@@ -5,25 +5,28 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace vlo
 {
+namespace
+{
+/// Each alignment with its name on the command line, in plans and in reports.
+const std::pair<Alignment, const char*> kAlignmentNames[] = {
+	{Alignment::None, "none"}, {Alignment::SE3, "se3"}, {Alignment::Sim3, "sim3"}};
+}  // namespace
+
 Alignment parseAlignment(const std::string& s, const std::string& where)
 {
-	if (s == "none") return Alignment::None;
-	if (s == "se3") return Alignment::SE3;
-	if (s == "sim3") return Alignment::Sim3;
+	for (const auto& [a, name] : kAlignmentNames)
+		if (s == name) return a;
 	failInput(where, "unknown alignment '" + s + "' (expected none, se3 or sim3)");
 }
 
 const char* toString(Alignment a)
 {
-	switch (a)
-	{
-		case Alignment::None: return "none";
-		case Alignment::SE3: return "se3";
-		case Alignment::Sim3: return "sim3";
-	}
+	for (const auto& [value, name] : kAlignmentNames)
+		if (value == a) return name;
 	return "?";
 }
 

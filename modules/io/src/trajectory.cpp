@@ -46,17 +46,34 @@ bool skippable(const std::string& line)
 	const auto p = line.find_first_not_of(" \t\r");
 	return p == std::string::npos || line[p] == '#';
 }
+
+/// Calls use(numbers, line number) for each line of the text file that is neither blank nor a comment,
+/// holding exactly n numbers (else throws naming the file and line).
+template <class Use>
+void forEachRow(const std::string& path, size_t n, Use&& use)
+{
+	auto in = openOrFail(path);
+	std::string line;
+	for (size_t lineNo = 1; std::getline(in, line); ++lineNo)
+		if (!skippable(line)) use(parseNumbers(line, n, path, lineNo), lineNo);
+}
+
+/// Writes one line per pose with write(stream, pose), 9 significant digits, all or nothing.
+template <class Write>
+void writeRows(const std::string& path, const Trajectory& traj, Write&& write)
+{
+	AtomicOutputFile f(path);
+	auto& out = f.stream();
+	out.precision(9);
+	for (const auto& p : traj) write(out, p);
+	f.commit();
+}
 }  // namespace
 
 Trajectory readTum(const std::string& path)
 {
-	auto in = openOrFail(path);
 	Trajectory traj;
-	std::string line;
-	for (size_t lineNo = 1; std::getline(in, line); ++lineNo)
-	{
-		if (skippable(line)) continue;
-		const auto v = parseNumbers(line, 8, path, lineNo);
+	forEachRow(path, 8, [&](const std::vector<double>& v, size_t lineNo) {
 		StampedPose p;
 		p.t = v[0];
 		if (!traj.empty() && p.t <= traj.back().t)
@@ -67,50 +84,35 @@ Trajectory readTum(const std::string& path)
 		p.pose.linear() = q.normalized().toRotationMatrix();
 		p.pose.translation() = Eigen::Vector3d(v[1], v[2], v[3]);
 		traj.push_back(p);
-	}
+	});
 	return traj;
 }
 
 void writeTum(const std::string& path, const Trajectory& traj)
 {
-	AtomicOutputFile f(path);
-	auto& out = f.stream();
-	out.precision(9);
-	for (const auto& p : traj)
-	{
+	writeRows(path, traj, [](std::ostream& out, const StampedPose& p) {
 		const Eigen::Quaterniond q(p.pose.rotation());
 		const Eigen::Vector3d t = p.pose.translation();
 		out << std::fixed << p.t << ' ' << t.x() << ' ' << t.y() << ' ' << t.z() << ' ' << q.x() << ' ' << q.y()
 			<< ' ' << q.z() << ' ' << q.w() << '\n';
-	}
-	f.commit();
+	});
 }
 
 std::vector<double> readKittiTimes(const std::string& path)
 {
-	auto in = openOrFail(path);
 	std::vector<double> times;
-	std::string line;
-	for (size_t lineNo = 1; std::getline(in, line); ++lineNo)
-	{
-		if (skippable(line)) continue;
-		const double t = parseNumbers(line, 1, path, lineNo)[0];
-		if (!times.empty() && t <= times.back())
+	forEachRow(path, 1, [&](const std::vector<double>& v, size_t lineNo) {
+		if (!times.empty() && v[0] <= times.back())
 			failInput(path, "line " + std::to_string(lineNo) + ": time is not after the previous one");
-		times.push_back(t);
-	}
+		times.push_back(v[0]);
+	});
 	return times;
 }
 
 Trajectory readKittiPoses(const std::string& path, const std::vector<double>& times)
 {
-	auto in = openOrFail(path);
 	Trajectory traj;
-	std::string line;
-	for (size_t lineNo = 1; std::getline(in, line); ++lineNo)
-	{
-		if (skippable(line)) continue;
-		const auto v = parseNumbers(line, 12, path, lineNo);
+	forEachRow(path, 12, [&](const std::vector<double>& v, size_t) {
 		StampedPose p;
 		Eigen::Matrix3d R;
 		for (int r = 0; r < 3; ++r)
@@ -120,7 +122,7 @@ Trajectory readKittiPoses(const std::string& path, const std::vector<double>& ti
 		}
 		p.pose.linear() = orthonormalize(R);
 		traj.push_back(p);
-	}
+	});
 	if (!times.empty() && times.size() < traj.size())
 		failInput(path, std::to_string(traj.size()) + " poses but only " + std::to_string(times.size()) + " times");
 	for (size_t i = 0; i < traj.size(); ++i) traj[i].t = times.empty() ? 0.1 * i : times[i];
@@ -129,16 +131,11 @@ Trajectory readKittiPoses(const std::string& path, const std::vector<double>& ti
 
 void writeKittiPoses(const std::string& path, const Trajectory& traj)
 {
-	AtomicOutputFile f(path);
-	auto& out = f.stream();
-	out.precision(9);
-	for (const auto& p : traj)
-	{
+	writeRows(path, traj, [](std::ostream& out, const StampedPose& p) {
 		const Eigen::Matrix4d M = p.pose.matrix();
 		for (int r = 0; r < 3; ++r)
 			for (int c = 0; c < 4; ++c) out << std::scientific << M(r, c) << ((r == 2 && c == 3) ? '\n' : ' ');
-	}
-	f.commit();
+	});
 }
 
 Trajectory cameraToVehicle(const Trajectory& cam0, const Eigen::Isometry3d& cam0_T_velo)

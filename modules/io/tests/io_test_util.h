@@ -10,6 +10,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
@@ -61,6 +62,23 @@ inline void expectInputError(const std::function<void()>& f, const std::vector<s
 		for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
 		EXPECT_EQ(msg.find('\n'), std::string::npos) << "not one line: " << msg;
 	}
+}
+
+/// Writes `text` to `path` byte for byte; returns `path`.
+inline std::string writeFile(const std::string& path, const std::string& text)
+{
+	std::ofstream(path, std::ios::binary) << text;
+	return path;
+}
+
+/// Writes `text` to `path`, then expects read(path) to throw an InputError naming `path` and holding
+/// every one of `parts`.
+inline void expectRefused(const std::string& path, const std::string& text,
+	const std::function<void(const std::string&)>& read, std::vector<std::string> parts)
+{
+	writeFile(path, text);
+	parts.insert(parts.begin(), path);
+	expectInputError([&] { read(path); }, parts);
 }
 
 /// A rig with non-trivial camera and LiDAR placements.

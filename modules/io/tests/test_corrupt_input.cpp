@@ -30,12 +30,6 @@ void limitAddressSpace()
 #endif
 }
 
-std::string write(const std::string& path, const std::string& text)
-{
-	std::ofstream(path, std::ios::binary) << text;
-	return path;
-}
-
 /// The real file `name` of the KITTI raw sample with the first match of `pattern` replaced.
 std::string rawCalibWith(const std::string& name, const std::string& pattern, const std::string& replacement,
 	const std::string& dir)
@@ -44,7 +38,7 @@ std::string rawCalibWith(const std::string& name, const std::string& pattern, co
 	const std::string text((std::istreambuf_iterator<char>(in)), {});
 	const std::string changed = std::regex_replace(text, std::regex(pattern), replacement, std::regex_constants::format_first_only);
 	EXPECT_NE(changed, text) << pattern;
-	return write(dir + "/" + name, changed);
+	return writeFile(dir + "/" + name, changed);
 }
 
 /// A small good rawlog: reading it links the reader, and with it the JPEG error handler.
@@ -106,11 +100,12 @@ TEST(CorruptInput, KittiCalibrationThatIsNoProjectionOrRotationIsAnError)
 {
 	const std::string dir = freshDir();
 	std::string calib = kOdometryCalib;
-	const std::string p = write(dir + "/p.txt", std::regex_replace(calib, std::regex("6.018873e\\+02"), "1e308"));
-	expectInputError([&] { readKittiOdometryCalib(p); }, {p, "P0 is not a rectified projection"});
-	const std::string tr = write(dir + "/tr.txt", std::regex_replace(calib, std::regex("Tr: .*"), "Tr: 0 0 0 1 0 0 0 2 0 0 0 3"));
-	expectInputError([&] { readKittiOdometryCalib(tr); }, {tr, "Tr is not a rigid transform"});
-	EXPECT_NO_THROW(readKittiOdometryCalib(write(dir + "/good.txt", calib)));
+	const auto readCalib = [](const std::string& path) { readKittiOdometryCalib(path); };
+	expectRefused(dir + "/p.txt", std::regex_replace(calib, std::regex("6.018873e\\+02"), "1e308"), readCalib,
+		{"P0 is not a rectified projection"});
+	expectRefused(dir + "/tr.txt", std::regex_replace(calib, std::regex("Tr: .*"), "Tr: 0 0 0 1 0 0 0 2 0 0 0 3"), readCalib,
+		{"Tr is not a rigid transform"});
+	EXPECT_NO_THROW(readKittiOdometryCalib(writeFile(dir + "/good.txt", calib)));
 
 	const std::string raw = sharedData("kitti_raw_2011_09_26_sample");
 	const std::string velo = raw + "/calib_velo_to_cam.txt", cam = raw + "/calib_cam_to_cam.txt";
@@ -127,12 +122,12 @@ TEST(CorruptInput, KittiCalibrationThatIsNoProjectionOrRotationIsAnError)
 TEST(CorruptInput, MalformedTextIsQuotedPrintably)
 {
 	const std::string dir = freshDir();
-	const std::string times = write(dir + "/times.txt", "0.0\n1.0\x10x\n");
-	expectInputError([&] { readKittiTimes(times); }, {times, "line 2: '1.0?x' is not a number"});
-	const std::string tum = write(dir + "/t.tum", "0 0 0 0 0 0 0 1\x1b\n");
-	expectInputError([&] { readTum(tum); }, {tum, "line 1: '1?' is not a number"});
-	const std::string dates = write(dir + "/timestamps.txt", "2011-09-26 13:02:25.0\x07\n");
-	expectInputError([&] { readKittiRawTimestamps(dates); }, {dates, "'2011-09-26 13:02:25.0?' is not a date"});
+	expectRefused(dir + "/times.txt", "0.0\n1.0\x10x\n", [](const std::string& p) { readKittiTimes(p); },
+		{"line 2: '1.0?x' is not a number"});
+	expectRefused(dir + "/t.tum", "0 0 0 0 0 0 0 1\x1b\n", [](const std::string& p) { readTum(p); },
+		{"line 1: '1?' is not a number"});
+	expectRefused(dir + "/timestamps.txt", "2011-09-26 13:02:25.0\x07\n", [](const std::string& p) { readKittiRawTimestamps(p); },
+		{"'2011-09-26 13:02:25.0?' is not a date"});
 }
 
 // MRPT decodes inline JPEG images (CImage::serializeFrom, a bit flipped in a rawlog) with libjpeg's

@@ -18,18 +18,12 @@ const char* kOdometryCalib =
 	"P1: 7.070912e+02 0 6.018873e+02 -3.798145e+02 0 7.070912e+02 1.831104e+02 0 0 0 1 0\n"
 	"Tr: -1.857739e-03 -9.999659e-01 -8.039975e-03 -4.784029e-03 -6.481465e-04 8.051860e-03 -9.999674e-01 "
 	"-7.337429e-02 9.999981e-01 -1.805528e-03 -6.627484e-04 -3.339968e-01\n";
-
-std::string write(const std::string& path, const std::string& text)
-{
-	std::ofstream(path) << text;
-	return path;
-}
 }  // namespace
 
 TEST(KittiCalib, OdometryCalibWithAndWithoutTr)
 {
 	const std::string dir = freshDir();
-	const auto c = readKittiOdometryCalib(write(dir + "/calib.txt", kOdometryCalib));
+	const auto c = readKittiOdometryCalib(writeFile(dir + "/calib.txt", kOdometryCalib));
 	EXPECT_DOUBLE_EQ(c.P0(0, 0), 707.0912);
 	EXPECT_DOUBLE_EQ(c.P0(1, 2), 183.1104);
 	ASSERT_TRUE(c.has_tr);
@@ -38,7 +32,7 @@ TEST(KittiCalib, OdometryCalibWithAndWithoutTr)
 		0, 1e-12);
 	EXPECT_NEAR(c.cam0_T_velo.rotation()(2, 0), 0.9999981, 1e-5);
 
-	const auto n = readKittiOdometryCalib(write(dir + "/notr.txt", "P0: 700 0 600 0 0 700 180 0 0 0 1 0\n"));
+	const auto n = readKittiOdometryCalib(writeFile(dir + "/notr.txt", "P0: 700 0 600 0 0 700 180 0 0 0 1 0\n"));
 	EXPECT_FALSE(n.has_tr);
 	// Nominal: vehicle x forward is camera z, vehicle y left is camera -x, vehicle z up is camera -y.
 	EXPECT_TRUE((n.cam0_T_velo * Eigen::Vector3d(1, 0, 0)).isApprox(Eigen::Vector3d(0, 0, 1)));
@@ -49,12 +43,10 @@ TEST(KittiCalib, OdometryCalibWithAndWithoutTr)
 TEST(KittiCalib, MissingOrMalformedKeyNamesFileAndKey)
 {
 	const std::string dir = freshDir();
-	const std::string p1 = write(dir + "/a.txt", "P1: 1 2 3 4 5 6 7 8 9 10 11 12\n");
-	expectInputError([&] { readKittiOdometryCalib(p1); }, {p1, "missing key 'P0'"});
-	const std::string p2 = write(dir + "/b.txt", "P0: 1 2 3\n");
-	expectInputError([&] { readKittiOdometryCalib(p2); }, {p2, "key 'P0' has 3 numbers, expected 12"});
-	const std::string p3 = write(dir + "/c.txt", "P0: 1 2 3 4 5 6 7 8 9 10 11 x\n");
-	expectInputError([&] { readKittiOdometryCalib(p3); }, {p3, "key 'P0' does not hold numbers"});
+	const auto readCalib = [](const std::string& path) { readKittiOdometryCalib(path); };
+	expectRefused(dir + "/a.txt", "P1: 1 2 3 4 5 6 7 8 9 10 11 12\n", readCalib, {"missing key 'P0'"});
+	expectRefused(dir + "/b.txt", "P0: 1 2 3\n", readCalib, {"key 'P0' has 3 numbers, expected 12"});
+	expectRefused(dir + "/c.txt", "P0: 1 2 3 4 5 6 7 8 9 10 11 x\n", readCalib, {"key 'P0' does not hold numbers"});
 	expectInputError([&] { readKittiOdometryCalib(dir + "/none.txt"); }, {dir + "/none.txt", "cannot open"});
 
 	const std::string raw = sharedData("kitti_raw_2011_09_26_sample");
@@ -62,9 +54,9 @@ TEST(KittiCalib, MissingOrMalformedKeyNamesFileAndKey)
 	std::string line, without;
 	while (std::getline(in, line))
 		if (line.rfind("R_rect_00", 0) != 0) without += line + "\n";
-	const std::string cc = write(dir + "/calib_cam_to_cam.txt", without);
+	const std::string cc = writeFile(dir + "/calib_cam_to_cam.txt", without);
 	expectInputError([&] { readKittiRawCalib(cc, raw + "/calib_velo_to_cam.txt", 2); }, {cc, "missing key 'R_rect_00'"});
-	const std::string vc = write(dir + "/calib_velo_to_cam.txt", "R: 1 0 0 0 1 0 0 0 1\n");
+	const std::string vc = writeFile(dir + "/calib_velo_to_cam.txt", "R: 1 0 0 0 1 0 0 0 1\n");
 	expectInputError([&] { readKittiRawCalib(raw + "/calib_cam_to_cam.txt", vc, 2); }, {vc, "missing key 'T'"});
 }
 
@@ -120,11 +112,10 @@ TEST(KittiTimestamps, DatesBecomeUnixSeconds)
 
 	const std::string dir = freshDir();
 	const auto times = readKittiRawTimestamps(
-		write(dir + "/ok.txt", "2011-09-26 13:02:25.964389445\n2011-09-26 13:02:26.074578832\n"));
+		writeFile(dir + "/ok.txt", "2011-09-26 13:02:25.964389445\n2011-09-26 13:02:26.074578832\n"));
 	ASSERT_EQ(times.size(), 2u);
 	EXPECT_NEAR(times[1] - times[0], 0.110189387, 1e-6);
-	const std::string back = write(dir + "/back.txt", "2011-09-26 13:02:26.0\n2011-09-26 13:02:25.9\n");
-	expectInputError([&] { readKittiRawTimestamps(back); }, {back, "line 2", "not after"});
-	const std::string bad = write(dir + "/bad.txt", "2011-09-26 13:02:26.0\nyesterday\n");
-	expectInputError([&] { readKittiRawTimestamps(bad); }, {bad, "line 2", "'yesterday' is not a date"});
+	const auto readDates = [](const std::string& path) { readKittiRawTimestamps(path); };
+	expectRefused(dir + "/back.txt", "2011-09-26 13:02:26.0\n2011-09-26 13:02:25.9\n", readDates, {"line 2", "not after"});
+	expectRefused(dir + "/bad.txt", "2011-09-26 13:02:26.0\nyesterday\n", readDates, {"line 2", "'yesterday' is not a date"});
 }

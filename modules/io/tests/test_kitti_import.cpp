@@ -28,6 +28,16 @@ int rawlogEditInfo(const std::string& path)
 	return std::system(("rawlog-edit --info -i '" + path + "' > '" + path + ".info.txt' 2>&1").c_str());
 }
 
+/// The import of sequence `seq` of the odometry layout at `root` into the rawlog `out`, camera 0.
+KittiOdometryImport odometryImport(const std::string& root, const std::string& seq, const std::string& out)
+{
+	KittiOdometryImport opt;
+	opt.root = root;
+	opt.seq = seq;
+	opt.out = out;
+	return opt;
+}
+
 void expectSamePoses(const Trajectory& a, const Trajectory& b)
 {
 	ASSERT_EQ(a.size(), b.size());
@@ -42,10 +52,7 @@ void expectSamePoses(const Trajectory& a, const Trajectory& b)
 TEST(KittiOdometryImport, RealSequence06IsCameraOnlyWithGroundTruth)
 {
 	const std::string root = sharedData("kitti_odometry_06_0000-0050"), dir = freshDir();
-	KittiOdometryImport opt;
-	opt.root = root;
-	opt.seq = "06";
-	opt.out = dir + "/s06.rawlog";
+	KittiOdometryImport opt = odometryImport(root, "06", dir + "/s06.rawlog");
 	const auto summary = importKittiOdometry(opt);
 	EXPECT_EQ(summary.frames, 51u);
 	EXPECT_EQ(summary.scans, 0u);
@@ -79,10 +86,7 @@ TEST(KittiOdometryImport, RealSequence06IsCameraOnlyWithGroundTruth)
 TEST(KittiOdometryImport, FrameRangeKeepsTheDatasetTimes)
 {
 	const std::string root = sharedData("kitti_odometry_06_0000-0050"), dir = freshDir();
-	KittiOdometryImport opt;
-	opt.root = root;
-	opt.seq = "06";
-	opt.out = dir + "/r.rawlog";
+	KittiOdometryImport opt = odometryImport(root, "06", dir + "/r.rawlog");
 	opt.first = 10;
 	opt.last = 20;
 	EXPECT_EQ(importKittiOdometry(opt).frames, 11u);
@@ -166,11 +170,8 @@ TEST(KittiOdometryImport, ColourCamera2OfEverySnippetMatchesP2TimesTr)
 	const std::string root = sharedData("kitti_odometry_snippets"), dir = freshDir();
 	for (const std::string seq : {"00", "04", "06", "08"})
 	{
-		KittiOdometryImport opt;
-		opt.root = root;
-		opt.seq = seq;
+		KittiOdometryImport opt = odometryImport(root, seq, dir + "/" + seq + ".rawlog");
 		opt.camera = 2;
-		opt.out = dir + "/" + seq + ".rawlog";
 		const auto summary = importKittiOdometry(opt);
 		EXPECT_EQ(summary.frames, 10u);
 		EXPECT_EQ(summary.scans, 10u);

@@ -12,14 +12,6 @@ namespace vlo::loam::test
 {
 namespace
 {
-Eigen::Isometry3d yawMove(double x, double y, double yaw_deg)
-{
-	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-	T.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-	T.translation() = Eigen::Vector3d(x, y, 0);
-	return T;
-}
-
 struct Drive
 {
 	Frame a, b;
@@ -35,8 +27,8 @@ Drive drive()
 	LidarModel m = hdl64();
 	m.noise_sigma = 0.01;
 	std::mt19937 rng(9);
-	const Eigen::Isometry3d Tvl = yawMove(0.5, 0.2, 90) * Eigen::Translation3d(0, 0, 1.8);
-	const Eigen::Isometry3d lidarMotion = yawMove(4.5, 0.4, 12);  // along the street, the LiDAR's x
+	const Eigen::Isometry3d Tvl = planarPose(0.5, 0.2, 90) * Eigen::Translation3d(0, 0, 1.8);
+	const Eigen::Isometry3d lidarMotion = planarPose(4.5, 0.4, 12);  // along the street, the LiDAR's x
 	const Eigen::Isometry3d A = lidarPoseAt(path, 25);
 	Drive d;
 	for (Frame* f : {&d.a, &d.b})
@@ -73,7 +65,7 @@ std::pair<Eigen::Isometry3d, std::string> run(const Drive& d, const std::optiona
 TEST(AloamModule, TakesTheVehicleMotionAsGuessAndReturnsTheVehiclePose)
 {
 	const Drive d = drive();
-	const Eigen::Isometry3d guess = d.vehicle_motion * yawMove(0.1, -0.05, 0.5);  // VO-like error
+	const Eigen::Isometry3d guess = d.vehicle_motion * planarPose(0.1, -0.05, 0.5);  // VO-like error
 	const auto [pose, prior] = run(d, guess);
 	EXPECT_EQ(prior, "external");
 	EXPECT_LT(translationError(pose, d.vehicle_motion), 0.01);

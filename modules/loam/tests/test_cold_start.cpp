@@ -13,14 +13,6 @@ namespace vlo::loam::test
 {
 namespace
 {
-Eigen::Isometry3d planar(double x, double y, double yaw_deg)
-{
-	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-	T.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-	T.translation() = Eigen::Vector3d(x, y, 0);
-	return T;
-}
-
 Path straight()
 {
 	Path p;
@@ -50,7 +42,7 @@ LidarOdometryResult registerPair(bool hdl, const Eigen::Isometry3d& delta, unsig
 void expectColdStart(bool hdl)
 {
 	// Forward and backward at 35 m/s, and sideways/diagonal with a turn: nothing assumes x.
-	const Eigen::Isometry3d deltas[] = {planar(3.5, 0, 0), planar(-3.5, 0, 0), planar(0.3, 3.5, 3), planar(-2.4, -2.4, -8)};
+	const Eigen::Isometry3d deltas[] = {planarPose(3.5, 0, 0), planarPose(-3.5, 0, 0), planarPose(0.3, 3.5, 3), planarPose(-2.4, -2.4, -8)};
 	unsigned seed = 60;
 	for (const Eigen::Isometry3d& d : deltas)
 	{

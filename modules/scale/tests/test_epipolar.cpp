@@ -4,29 +4,19 @@
 
 #include <cmath>
 
+#include "pinhole.h"
+
 using namespace vlo::scale;
+using namespace vlo::scale::test;
 
 namespace
 {
-Eigen::Matrix3d kittiK()
-{
-	Eigen::Matrix3d K;
-	K << 718.856, 0, 607.1928, 0, 718.856, 185.2157, 0, 0, 1;
-	return K;
-}
-
 /// The camera moves sideways along its x axis: X_cur = X_prev - (b, 0, 0), epipolar lines are the rows.
 Eigen::Isometry3d sideways(double b)
 {
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 	T.translation() = Eigen::Vector3d(-b, 0, 0);
 	return T;
-}
-
-cv::Point2f project(const Eigen::Matrix3d& K, const Eigen::Vector3d& X)
-{
-	const Eigen::Vector3d x = K * X;
-	return {static_cast<float>(x.x() / x.z()), static_cast<float>(x.y() / x.z())};
 }
 }  // namespace
 

@@ -4,23 +4,10 @@
 
 #include <random>
 
+#include "pinhole.h"
+
 using namespace vlo::scale;
-
-namespace
-{
-Eigen::Matrix3d kittiK()
-{
-	Eigen::Matrix3d K;
-	K << 718.856, 0, 607.1928, 0, 718.856, 185.2157, 0, 0, 1;
-	return K;
-}
-
-cv::Point2f project(const Eigen::Matrix3d& K, const Eigen::Vector3d& X)
-{
-	const Eigen::Vector3d x = K * X;
-	return {static_cast<float>(x.x() / x.z()), static_cast<float>(x.y() / x.z())};
-}
-}  // namespace
+using namespace vlo::scale::test;
 
 TEST(Triangulation, ExactDepthOnNoiseFreeCorrespondences)
 {

@@ -25,23 +25,12 @@ std::vector<cv::Point2d> pixels(const Trajectory& t, const PlotArea& a)
 	return px;
 }
 
-std::string lengthText(double metres)
+/// `metres` written with `m_format`, or from `km_from` metres on in kilometres with `km_format`.
+std::string lengthText(double metres, double km_from, const char* m_format, const char* km_format)
 {
 	char buf[32];
-	if (metres >= 10000)
-		std::snprintf(buf, sizeof buf, "%.1f km", metres / 1000);
-	else
-		std::snprintf(buf, sizeof buf, "%.0f m", metres);
-	return buf;
-}
-
-std::string roundLengthText(double metres)
-{
-	char buf[32];
-	if (metres >= 1000)
-		std::snprintf(buf, sizeof buf, "%g km", metres / 1000);
-	else
-		std::snprintf(buf, sizeof buf, "%g m", metres);
+	const bool km = metres >= km_from;
+	std::snprintf(buf, sizeof buf, km ? km_format : m_format, km ? metres / 1000 : metres);
 	return buf;
 }
 
@@ -121,7 +110,7 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	};
 	auto label = [&](const std::string& name, const Trajectory& t) {
 		if (t.empty()) return name + "  (empty)";
-		return style.show_lengths ? name + "  (" + lengthText(pathLength(t)) + ")" : name;
+		return style.show_lengths ? name + "  (" + lengthText(pathLength(t), 10000, "%.0f m", "%.1f km") + ")" : name;
 	};
 	std::vector<std::pair<std::vector<cv::Point2d>, Rgb>> markers;
 	if (gt)
@@ -146,7 +135,7 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	const double barM = niceStep((a.xmax - a.xmin) * 0.18);
 	const int barPx = int(std::lround(barM * a.pixelsPerUnitX()));
 	const cv::Size bsz(barPx + 40, 52);
-	scaleBar(img, canvas::emptiestCorner(a.rect, bsz, all, cv::Rect(ltl, lsz)), bsz, barPx, roundLengthText(barM));
+	scaleBar(img, canvas::emptiestCorner(a.rect, bsz, all, cv::Rect(ltl, lsz)), bsz, barPx, lengthText(barM, 1000, "%g m", "%g km"));
 	return img;
 }
 

@@ -41,14 +41,7 @@ int LocalMapper::createPoints(KeyFrame* kf)
 			const double ratio_dist = d2 / d1, ratio_octave = pyr_.scale[l1] / pyr_.scale[l2];
 			if (ratio_dist * ratio_factor < ratio_octave || ratio_dist > ratio_octave * ratio_factor) continue;
 
-			MapPoint* mp = map_.addPoint(X, kf);
-			mp->addObservation(kf, i1);
-			mp->addObservation(kf2, i2);
-			kf->points[static_cast<std::size_t>(i1)] = mp;
-			kf2->points[static_cast<std::size_t>(i2)] = mp;
-			mp->updateDescriptor();
-			mp->updateNormalAndDepth(pyr_);
-			recent_.push_back(mp);
+			recent_.push_back(map_.addPointSeenBy(X, kf, kf, i1, kf2, i2, pyr_));
 			++created;
 		}
 	}

@@ -16,6 +16,19 @@ MapPoint* Map::addPoint(const Vec3& pos, KeyFrame* ref)
 	return points_.back().get();
 }
 
+MapPoint* Map::addPointSeenBy(
+	const Vec3& pos, KeyFrame* ref, KeyFrame* a, int ia, KeyFrame* b, int ib, const ScalePyramid& pyr)
+{
+	MapPoint* mp = addPoint(pos, ref);
+	mp->addObservation(a, ia);
+	mp->addObservation(b, ib);
+	a->points[static_cast<std::size_t>(ia)] = mp;
+	b->points[static_cast<std::size_t>(ib)] = mp;
+	mp->updateDescriptor();
+	mp->updateNormalAndDepth(pyr);
+	return mp;
+}
+
 std::vector<KeyFrame*> Map::keyFrames() const
 {
 	std::vector<KeyFrame*> out;

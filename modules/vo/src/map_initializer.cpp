@@ -76,14 +76,7 @@ InitResult MapInitializer::buildMap(const TrackedFrame& cur, const TwoViewResult
 	{
 		if (!tv.good[c]) continue;
 		const int i1 = static_cast<int>(pair_of[c]), i2 = m12[pair_of[c]];
-		MapPoint* mp = r.map->addPoint(tv.points[c], k2);
-		mp->addObservation(k1, i1);
-		mp->addObservation(k2, i2);
-		k1->points[static_cast<std::size_t>(i1)] = mp;
-		k2->points[static_cast<std::size_t>(i2)] = mp;
-		mp->updateDescriptor();
-		mp->updateNormalAndDepth(pyr_);
-		w.points.push_back(mp);
+		w.points.push_back(r.map->addPointSeenBy(tv.points[c], k2, k1, i1, k2, i2, pyr_));
 	}
 	k1->updateConnections(mopt_.min_covisibility);
 	k2->updateConnections(mopt_.min_covisibility);

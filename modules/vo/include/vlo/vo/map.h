@@ -14,6 +14,10 @@ class Map
    public:
 	KeyFrame* addKeyFrame(long frame_index, double t, std::shared_ptr<const Features> f, const SE3& Tcw);
 	MapPoint* addPoint(const Vec3& pos, KeyFrame* ref);
+	/// A point triangulated from keypoint ia of keyframe a and ib of b: observed by both and linked from
+	/// both, its descriptor, normal and depth range computed.
+	MapPoint* addPointSeenBy(const Vec3& pos, KeyFrame* ref, KeyFrame* a, int ia, KeyFrame* b, int ib,
+		const ScalePyramid& pyr);
 
 	/// Live keyframes in creation order.
 	std::vector<KeyFrame*> keyFrames() const;

@@ -115,7 +115,7 @@ sed 's/^\[sequence tiny\]/[sequence other]/' tiny.ini > other.ini
 grep -qF "$BIN/vlo-sim --scenario urban --lidar hdl64 --frames 25 --seed 5 --out $W/data/other.rawlog --quiet" other-data.txt ||
 	fail "unexpected data line: $(cat other-data.txt)"
 
-# The shipped plans are valid and expand to 7 drives x 4 (paper table) and 6 drives x 10 (ablation) runs. Their
+# The shipped plans are valid and expand to 7 drives x 6 (paper table) and 6 drives x 10 (ablation) runs. Their
 # KITTI drive needs odometry 00's ground-truth poses in the data folder, as doc/BATCH.md says.
 if [ -f "$VLO_DATA/kitti_gt_poses.tar.xz" ]; then
 	mkdir -p shipped && tar -xJf "$VLO_DATA/kitti_gt_poses.tar.xz" -C shipped kitti_gt_poses/00.txt

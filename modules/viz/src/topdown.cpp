@@ -45,6 +45,21 @@ std::string roundLengthText(double metres)
 	return buf;
 }
 
+/// The largest of the values that colour the first path (checked against its pose count); -1 when none.
+double largestValue(const std::vector<NamedTrajectory>& trajs, const std::vector<double>& values)
+{
+	if (values.empty()) return -1;
+	if (trajs.empty() || values.size() != trajs[0].traj.size())
+		failInput("top-down view", std::to_string(values.size()) + " values for " +
+				std::to_string(trajs.empty() ? 0 : trajs[0].traj.size()) + " poses of the first trajectory");
+	double vmax = 0;
+	for (const double v : values)
+		if (std::isfinite(v)) vmax = std::max(vmax, v);
+	return vmax;
+}
+
+Rgb valueColor(double v, double vmax) { return turbo(vmax > 0 ? v / vmax : 0); }
+
 void startEndMarkers(cv::Mat& img, const std::vector<cv::Point2d>& px, Rgb color)
 {
 	if (px.empty()) return;
@@ -112,11 +127,15 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	std::vector<cv::Point2d> all;  // every drawn pixel position, to keep boxes off the data
 	cv::Mat plot = img(a.rect);  // clip lines to the plot area
 	const cv::Point2d off(-a.rect.x, -a.rect.y);
-	auto draw = [&](const Trajectory& t, Rgb c, int width) {
+	const double vmax = largestValue(trajs, style.values);
+	auto draw = [&](const Trajectory& t, Rgb c, int width, const std::vector<double>& values = {}) {
 		auto px = pixels(t, a);
 		all.insert(all.end(), px.begin(), px.end());
 		for (auto& p : px) p += off;
-		if (!px.empty()) canvas::polyline(plot, px, canvas::bgr(c), width);
+		if (values.empty() && !px.empty()) canvas::polyline(plot, px, canvas::bgr(c), width);
+		for (size_t i = 1; i < px.size() && !values.empty(); ++i)
+			canvas::polyline(plot, {px[i - 1], px[i]}, canvas::bgr(valueColor(0.5 * (values[i - 1] + values[i]), vmax)),
+				width + 1);
 		return px;
 	};
 	auto label = [&](const std::string& name, const Trajectory& t) {
@@ -131,9 +150,11 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	}
 	for (size_t i = 0; i < trajs.size(); ++i)
 	{
-		const Rgb c = trajs[i].color.value_or(paletteColor(i));
-		markers.push_back({draw(trajs[i].traj, c, style.line_width), c});
-		items.push_back({canvas::LegendItem::Line, label(trajs[i].name, trajs[i].traj), c, style.line_width + 1});
+		const std::vector<double> none, &values = i == 0 ? style.values : none;
+		const Rgb c = values.empty() ? trajs[i].color.value_or(paletteColor(i)) : valueColor(0.5 * vmax, vmax);
+		markers.push_back({draw(trajs[i].traj, c, style.line_width, values), c});
+		const std::string name = values.empty() ? trajs[i].name : trajs[i].name + ", coloured by " + style.value_label;
+		items.push_back({canvas::LegendItem::Line, label(name, trajs[i].traj), c, style.line_width + 1});
 	}
 	for (const auto& [px, c] : markers) startEndMarkers(plot, px, c);
 	items.push_back({canvas::LegendItem::Ring, "start", Rgb{40, 40, 40}});
@@ -143,6 +164,18 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	const cv::Point ltl = canvas::emptiestCorner(a.rect, lsz, all);
 	canvas::legend(img, ltl, items);
 
+	if (vmax >= 0)
+	{
+		// The axes already give the metres; the colour bar is what a coloured path needs.
+		const int barW = 260, labelW = canvas::textSize(style.value_label, canvas::kMedium).width;
+		const cv::Size csz(barW + labelW + 44, 58);
+		const cv::Point tl = canvas::emptiestCorner(a.rect, csz, all, cv::Rect(ltl, lsz));
+		cv::Mat roi = img(cv::Rect(tl, csz));
+		roi.convertTo(roi, -1, 0.15, 255 * 0.85);
+		canvas::colorBar(img, cv::Rect(tl.x + 14, tl.y + 10, barW, 16), 0, vmax, style.value_label,
+			[&](double t) { return valueColor(t * vmax, vmax); });
+		return img;
+	}
 	const double barM = niceStep((a.xmax - a.xmin) * 0.18);
 	const int barPx = int(std::lround(barM * a.pixelsPerUnitX()));
 	const cv::Size bsz(barPx + 40, 52);

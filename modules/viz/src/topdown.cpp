@@ -28,10 +28,11 @@ std::vector<cv::Point2d> pixels(const Trajectory& t, const PlotArea& a)
 std::string lengthText(double metres)
 {
 	char buf[32];
+	// One decimal below 100 m, so that short paths that differ by a few percent show it.
 	if (metres >= 10000)
 		std::snprintf(buf, sizeof buf, "%.1f km", metres / 1000);
 	else
-		std::snprintf(buf, sizeof buf, "%.0f m", metres);
+		std::snprintf(buf, sizeof buf, metres < 100 ? "%.1f m" : "%.0f m", metres);
 	return buf;
 }
 
@@ -60,16 +61,34 @@ double largestValue(const std::vector<NamedTrajectory>& trajs, const std::vector
 
 Rgb valueColor(double v, double vmax) { return turbo(vmax > 0 ? v / vmax : 0); }
 
-void startEndMarkers(cv::Mat& img, const std::vector<cv::Point2d>& px, Rgb color)
+/// The drive's start is one neutral ring (every trajectory that starts there shares it); a trajectory
+/// that starts elsewhere (a VO that initialised later) gets a diamond in its colour there. Every end is
+/// a square in its trajectory's colour. Returns whether a diamond was drawn.
+bool startEndMarkers(cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths)
 {
-	if (px.empty()) return;
-	const cv::Point s = canvas::round(px.front()), e = canvas::round(px.back());
-	// Start rings are neutral: every trajectory starts at the origin, so colours would hide each other.
+	const std::vector<cv::Point2d>* first = nullptr;
+	for (const auto& [px, c] : paths)
+		if (!px.empty() && !first) first = &px;
+	if (!first) return false;
+	const cv::Point s = canvas::round(first->front());
+	bool late = false;
+	for (const auto& [px, c] : paths)
+	{
+		if (px.empty()) continue;
+		const cv::Point e = canvas::round(px.back());
+		const cv::Rect sq(e.x - 6, e.y - 6, 13, 13);
+		cv::rectangle(img, sq, canvas::bgr(c), cv::FILLED);
+		cv::rectangle(img, sq, canvas::kInk, 1);
+	}
+	for (const auto& [px, c] : paths)
+		if (!px.empty() && cv::norm(px.front() - first->front()) > 4)
+		{
+			canvas::diamond(img, canvas::round(px.front()), 9, c);
+			late = true;
+		}
 	cv::circle(img, s, 7, canvas::kWhite, cv::FILLED, cv::LINE_AA);
 	cv::circle(img, s, 7, canvas::kInk, 2, cv::LINE_AA);
-	const cv::Rect sq(e.x - 6, e.y - 6, 13, 13);
-	cv::rectangle(img, sq, canvas::bgr(color), cv::FILLED);
-	cv::rectangle(img, sq, canvas::kInk, 1);
+	return late;
 }
 
 /// Round-length bar in metres, boxed, at `tl`.
@@ -148,16 +167,24 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 		markers.push_back({draw(*gt, kGroundTruthColor, style.line_width + 3), kGroundTruthColor});
 		items.push_back({canvas::LegendItem::Line, label(style.gt_name, *gt), kGroundTruthColor, style.line_width + 3});
 	}
-	for (size_t i = 0; i < trajs.size(); ++i)
+	// The first trajectory is the main result: drawn last, above the others; the legend keeps the list order.
+	std::vector<std::pair<std::vector<cv::Point2d>, Rgb>> paths(trajs.size());
+	for (size_t i = trajs.size(); i-- > 0;)
 	{
 		const std::vector<double> none, &values = i == 0 ? style.values : none;
 		const Rgb c = values.empty() ? trajs[i].color.value_or(paletteColor(i)) : valueColor(0.5 * vmax, vmax);
-		markers.push_back({draw(trajs[i].traj, c, style.line_width, values), c});
-		const std::string name = values.empty() ? trajs[i].name : trajs[i].name + ", coloured by " + style.value_label;
-		items.push_back({canvas::LegendItem::Line, label(name, trajs[i].traj), c, style.line_width + 1});
+		paths[i] = {draw(trajs[i].traj, c, style.line_width, values), c};
 	}
-	for (const auto& [px, c] : markers) startEndMarkers(plot, px, c);
-	items.push_back({canvas::LegendItem::Ring, "start", Rgb{40, 40, 40}});
+	for (size_t i = 0; i < trajs.size(); ++i)
+	{
+		const std::string name = i > 0 || style.values.empty() ? trajs[i].name
+															   : trajs[i].name + ", coloured by " + style.value_label;
+		items.push_back({canvas::LegendItem::Line, label(name, trajs[i].traj), paths[i].second, style.line_width + 1});
+	}
+	markers.insert(markers.end(), paths.begin(), paths.end());
+	const bool late = startEndMarkers(plot, markers);
+	items.push_back({canvas::LegendItem::Ring, "start of the drive", Rgb{40, 40, 40}});
+	if (late) items.push_back({canvas::LegendItem::Diamond, "start of a path that began later", Rgb{200, 200, 200}});
 	items.push_back({canvas::LegendItem::Square, "end", Rgb{200, 200, 200}});
 
 	const cv::Size lsz = canvas::legendSize(items);

@@ -80,18 +80,27 @@ void writeStageTimePlot(const std::string& png, const FrameTable& table)
 		}
 		stacked.push_back(std::move(s));
 	};
-	for (const auto& c : table.columns())
-		if (c.rfind("ms_", 0) == 0 && c != "ms_total") add(c.substr(3), table.numbers(c));
+	const std::vector<std::string> columns = table.columns();
+	// A stage with sub-stages (ms_vo beside ms_vo_extract, ...) is their sum: only the sub-stages are stacked,
+	// and its own overhead goes to "other".
+	const auto hasParts = [&](const std::string& c) {
+		return std::any_of(columns.begin(), columns.end(), [&](const std::string& d) { return d.rfind(c + "_", 0) == 0; });
+	};
+	for (const auto& c : columns)
+		if (c.rfind("ms_", 0) == 0 && c != "ms_total" && !hasParts(c)) add(c.substr(3), table.numbers(c));
 	if (stacked.empty() || total.size() != frame.size()) return;
 	std::vector<double> other(frame.size());
 	for (std::size_t i = 0; i < frame.size(); ++i) other[i] = std::max(0.0, total[i] - sum[i]);
 	add("other (reading, outputs)", other);
+	stacked.back().color = Rgb{170, 170, 170};  // not a stage: neutral, and never a palette colour again
+	const double top = *std::max_element(sum.begin(), sum.end());
 	SeriesStyle style;
 	style.title = "Time per frame per stage, stacked (dashed: the 100 ms budget of a 10 Hz sensor)";
 	style.xlabel = "frame";
 	style.ylabel = "time [ms]";
 	style.ymin = 0;
 	style.reference_y = kBudgetMs;
+	style.ymax = 1.3 * std::max(top, kBudgetMs);  // room above the stack for the legend
 	renderSeries(stacked, png, style);
 }
 

@@ -25,24 +25,25 @@ std::vector<cv::Point2d> pixels(const Trajectory& t, const PlotArea& a)
 	return px;
 }
 
-std::string lengthText(double metres)
+/// A path length; in `unit` when it is not metres (an unscaled VO's map units), which never become km.
+std::string lengthText(double v, const std::string& unit)
 {
-	char buf[32];
-	// One decimal below 100 m, so that short paths that differ by a few percent show it.
-	if (metres >= 10000)
-		std::snprintf(buf, sizeof buf, "%.1f km", metres / 1000);
+	char buf[48];
+	// One decimal below 100, so that short paths that differ by a few percent show it.
+	if (v >= 10000 && unit == "m")
+		std::snprintf(buf, sizeof buf, "%.1f km", v / 1000);
 	else
-		std::snprintf(buf, sizeof buf, metres < 100 ? "%.1f m" : "%.0f m", metres);
+		std::snprintf(buf, sizeof buf, v < 100 ? "%.1f %s" : "%.0f %s", v, unit.c_str());
 	return buf;
 }
 
-std::string roundLengthText(double metres)
+std::string roundLengthText(double v, const std::string& unit)
 {
-	char buf[32];
-	if (metres >= 1000)
-		std::snprintf(buf, sizeof buf, "%g km", metres / 1000);
+	char buf[48];
+	if (v >= 1000 && unit == "m")
+		std::snprintf(buf, sizeof buf, "%g km", v / 1000);
 	else
-		std::snprintf(buf, sizeof buf, "%g m", metres);
+		std::snprintf(buf, sizeof buf, "%g %s", v, unit.c_str());
 	return buf;
 }
 
@@ -137,7 +138,8 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	const PlotArea a = topDownArea(trajs, gt, style);
 	cv::Mat img(style.height, style.width, CV_8UC3, canvas::kWhite);
 	const double step = niceStep((a.xmax - a.xmin) / std::max(2.0, a.rect.width / 130.0));
-	canvas::axes(img, a, step, step, "x [m]  (forward at the first frame)", "y [m]  (left at the first frame)");
+	canvas::axes(img, a, step, step, "x [" + style.unit + "]  (forward at the first frame)",
+		"y [" + style.unit + "]  (left at the first frame)");
 	if (!style.title.empty())
 		canvas::text(img, style.title, {style.width / 2, 18}, canvas::kLarge, canvas::kInk, canvas::HAlign::Center,
 			canvas::VAlign::Top, 2);
@@ -159,7 +161,7 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	};
 	auto label = [&](const std::string& name, const Trajectory& t) {
 		if (t.empty()) return name + "  (empty)";
-		return style.show_lengths ? name + "  (" + lengthText(pathLength(t)) + ")" : name;
+		return style.show_lengths ? name + "  (" + lengthText(pathLength(t), style.unit) + ")" : name;
 	};
 	std::vector<std::pair<std::vector<cv::Point2d>, Rgb>> markers;
 	if (gt)
@@ -206,7 +208,7 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	const double barM = niceStep((a.xmax - a.xmin) * 0.18);
 	const int barPx = int(std::lround(barM * a.pixelsPerUnitX()));
 	const cv::Size bsz(barPx + 40, 52);
-	scaleBar(img, canvas::emptiestCorner(a.rect, bsz, all, cv::Rect(ltl, lsz)), bsz, barPx, roundLengthText(barM));
+	scaleBar(img, canvas::emptiestCorner(a.rect, bsz, all, cv::Rect(ltl, lsz)), bsz, barPx, roundLengthText(barM, style.unit));
 	return img;
 }
 

@@ -7,8 +7,11 @@
 #include <vlo/eval/evaluate.h>
 #include <vlo/eval/report.h>
 #include <vlo/io/trajectory.h>
+#include <vlo/viz/eval_plots.h>
 
+#include <filesystem>
 #include <iostream>
+#include <set>
 #include <sstream>
 
 using namespace vlo;
@@ -30,11 +33,25 @@ std::vector<double> parseLengths(const std::string& s)
 	return v;
 }
 
+/// Legend names: each file's name without folder and extension, or the path as given when two would clash.
+std::vector<std::string> runNames(const std::vector<std::string>& files)
+{
+	std::vector<std::string> names;
+	std::set<std::string> seen;
+	bool clash = false;
+	for (const auto& f : files)
+	{
+		names.push_back(std::filesystem::path(f).stem().string());
+		clash = clash || !seen.insert(names.back()).second;
+	}
+	return clash ? files : names;
+}
+
 int run(int argc, char** argv)
 {
 	const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 1,
 		{{"gt", "GT.tum", "ground truth (TUM, vehicle frame)", true},
-			{"est", "EST.tum", "estimated trajectory (TUM, vehicle frame)", true},
+			{"est", "EST.tum", "estimated trajectory (TUM, vehicle frame); repeat to compare several", true, true},
 			{"metric", "kitti|ate|rpe|all", "metrics to compute (default all)"},
 			{"align", "se3|sim3|none", "alignment before ATE/ARE (default se3; sim3 for unscaled monocular)"},
 			{"json", "OUT.json", "also write the results as JSON"},
@@ -44,14 +61,14 @@ int run(int argc, char** argv)
 			{"kitti-calib", "calib.txt", "rig from the Tr line of a KITTI calib.txt: KITTI metric in camera 0"},
 			{"kitti-lengths", "L1,L2,..", "KITTI segment lengths, m (default 100,200,...,800)"},
 			{"kitti-step", "N", "KITTI first frames every N matched frames (default 10)"},
-			{"write-aligned", "OUT.tum", "write the aligned, matched estimate (TUM)"}},
-		"vlo-eval --gt GT.tum --est EST.tum [options]\n\n"
+			{"write-aligned", "OUT.tum", "write the aligned, matched estimate (TUM)"},
+			{"plots", "DIR", "write the KITTI devkit's error plots and the path coloured by ATE (PNG)"}},
+		"vlo-eval --gt GT.tum --est EST.tum [--est EST2.tum ..] [options]\n\n"
 		"Scores an estimated trajectory against ground truth: the KITTI odometry metric and\n"
 		"ATE/ARE after Umeyama alignment, and the frame-to-frame relative pose error. See\n"
 		"doc/EVALUATION.md.");
 	EvalOptions opts;
 	opts.gt_name = cl.get("gt");
-	opts.est_name = cl.get("est");
 	parseMetric(cl.get("metric", "all"), opts);
 	opts.align = parseAlignment(cl.get("align", "se3"));
 	opts.association.max_gap_s = cl.getDouble("max-dt", 0);
@@ -66,24 +83,35 @@ int run(int argc, char** argv)
 	if (step < 1) failInput("--kitti-step", "must be at least 1");
 	opts.kitti_options.step = static_cast<std::size_t>(step);
 
+	const std::vector<std::string> est_files = cl.getAll("est");
+	if (est_files.size() > 1)
+		for (const char* single : {"json", "write-aligned"})
+			if (cl.has(single)) failInput(std::string("--") + single, "needs a single --est");
+
 	const Trajectory gt = readTum(opts.gt_name);
-	const Trajectory est = readTum(opts.est_name);
-	const EvalReport report = evaluate(gt, est, opts);
-	for (const auto& w : report.warnings) logger().logStr(mrpt::system::LVL_WARN, w);
-	std::cout << formatTable(report);
-	if (cl.has("json")) writeJson(cl.get("json"), report);
-	if (cl.has("write-aligned"))
+	const std::vector<std::string> names = runNames(est_files);
+	std::vector<EvalRun> runs;
+	for (std::size_t i = 0; i < est_files.size(); ++i)
 	{
-		Trajectory aligned = report.association.est;
-		if (report.ate)
-			for (auto& p : aligned)
-			{
-				// A Sim(3) is not an isometry: the position takes the scale, the orientation only R.
-				p.pose.translation() = report.ate->alignment * Eigen::Vector3d(p.pose.translation());
-				p.pose.linear() = report.ate->alignment.R * p.pose.linear();
-			}
-		writeTum(cl.get("write-aligned"), aligned);
+		opts.est_name = est_files[i];
+		runs.push_back({names[i], evaluate(gt, readTum(est_files[i]), opts)});
 	}
+	for (const auto& run : runs)
+	{
+		for (const auto& w : run.report.warnings) logger().logStr(mrpt::system::LVL_WARN, w);
+		if (runs.size() > 1) std::cout << (&run == &runs.front() ? "" : "\n") << "== " << run.name << " ==\n";
+		std::cout << formatTable(run.report);
+	}
+	if (cl.has("plots"))  // first: a folder that cannot be made then leaves nothing behind
+	{
+		const std::string dir = cl.get("plots");
+		const auto files = writeEvalPlots(dir, runs);
+		if (files.empty()) logger().logStr(mrpt::system::LVL_WARN, "--plots: nothing to plot (no KITTI segment, no ATE)");
+		for (const auto& f : files) std::cout << "plot: " << dir << "/" << f << "\n";
+	}
+	const EvalReport& report = runs.front().report;
+	if (cl.has("json")) writeJson(cl.get("json"), report);
+	if (cl.has("write-aligned")) writeTum(cl.get("write-aligned"), alignedEstimate(report));
 	return 0;
 }
 }  // namespace

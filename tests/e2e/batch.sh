@@ -94,6 +94,8 @@ grep -q "^| vo / vo | sim3 | [0-9.]* / [0-9.]* |$" out1/results.md || fail "resu
 grep -q "^| broken | failed |$" out1/results.md || fail "results.md: broken is not failed"
 grep -q "^| tiny / broken | vlo-run: error: --set loam.scan.ring_modle=hdl64: unknown key 'ring_modle'" out1/results.md || fail "results.md: no failure line"
 grep -q "^| lo | [0-9.]* |$" out1/results.md || fail "results.md: no timing for lo"
+grep -qF -- "- [tiny / lo](runs/tiny/lo/report.md)" out1/results.md || fail "results.md: no link to lo's report.md"
+grep -qF "runs/tiny/broken/report.md" out1/results.md && fail "results.md: links a report the failed run never wrote"
 [ "$(csv_field out1/results.csv tiny broken '' status)" = failed ] || fail "results.csv: broken is not failed"
 echo "local run: $(($(date +%s) - start)) s"
 

@@ -77,6 +77,18 @@ make_tum 60 1 1 0 short_straight.tum
 expect_eq tonly.json are_rmse_deg null
 grep -q '"ate_rmse_m": [0-9]' tonly.json || fail "translation-only: ATE missing"
 
+# 3b. --plots with two estimates of the 1349 m line (5 % and 2 % too long): the devkit's four plots and
+#     one ATE view each; the curves' numbers are checked in test_viz (EvalPlots).
+make_tum 1500 1 1 0 gt10hz.tum
+make_tum 1500 1 1.02 0 est2.tum
+"$EVAL" --gt gt10hz.tum --est est.tum --est est2.tum --plots plots > plots.txt || fail "plots: exit code"
+grep -q "== est2 ==" plots.txt || fail "plots: no table per estimate"
+for f in kitti_translation_vs_length kitti_rotation_vs_length kitti_translation_vs_speed kitti_rotation_vs_speed \
+	ate_est ate_est2; do
+	[ "$(head -c 4 "plots/$f.png" | tail -c 3)" = PNG ] || fail "plots: $f.png missing or not a PNG"
+done
+[ "$(ls plots | wc -l)" -eq 6 ] || fail "plots: expected 6 files, got $(ls plots)"
+
 # 4. Bad input.
 printf '0 0 0 0 0 0 0 1\n0.1 nan 0 0 0 0 0 1\n' > nan.tum
 printf '0 0 0 0 0 0 0 1\n0.1 1 0 0 0 0 1\n' > short_line.tum
@@ -91,6 +103,10 @@ expect_bad "bad metric" "unknown metric" --gt curve.tum --est curve.tum --metric
 expect_bad "calib without Tr" "calib_no_tr.txt: missing key 'Tr'" --gt curve.tum --est curve.tum --kitti-calib calib_no_tr.txt
 expect_bad "bad rig" "expected 12 numbers" --gt curve.tum --est curve.tum --cam0-T-vehicle "1 0 0"
 expect_bad "missing --est" "missing required option '--est'" --gt curve.tum
+expect_bad "--json with two --est" "--json: needs a single --est" --gt curve.tum --est curve.tum --est curve.tum
+touch not_a_dir
+expect_bad "plot folder in a file" "not_a_dir/plots: cannot create the plot folder" --gt curve.tum --est curve.tum \
+	--plots not_a_dir/plots
 "$EVAL" --gt curve.tum --est curve.tum --json no-such-dir/x.json > /dev/null 2> err.txt && fail "unwritable JSON: exit 0"
 [ ! -e no-such-dir ] || fail "unwritable JSON: created something"
 

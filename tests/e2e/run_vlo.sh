@@ -19,6 +19,14 @@ for f in trajectory_vlo.tum trajectory_vo.tum frames.csv map.pcd run.ini summary
 	[ -s "vlo/$f" ] || fail "$f missing"
 done
 [ "$(wc -l < vlo/trajectory_vlo.tum)" -eq $FRAMES ] || fail "trajectory_vlo.tum does not have $FRAMES poses"
+# report.md names only files that exist, and embeds the snapshots, the stage times and the ATE view.
+for t in $(grep -o '](\([^)]*\))' vlo/report.md | sed 's/^](//; s/)$//'); do
+	[ -s "vlo/$t" ] || fail "report.md links $t, which does not exist"
+done
+for f in snapshots/topdown.png snapshots/time_per_stage.png snapshots/ate_vlo.png trajectory_vlo.tum; do
+	grep -qF "($f)" vlo/report.md || fail "report.md does not link $f"
+done
+grep -qx "report.md" vlo/.vlo-run-files || fail "report.md is not in .vlo-run-files"
 grep -q '^source *= *external' vlo/run.ini || fail "run.ini does not show the external LOAM prior"
 
 "$BIN/vlo-eval" --gt drive.gt.tum --est vlo/trajectory_vlo.tum --kitti-lengths 10,20,30 --json vlo.json > /dev/null ||

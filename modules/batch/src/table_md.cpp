@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <set>
 #include <sstream>
 
@@ -165,6 +166,11 @@ std::string markdownResults(
 	if (!fails.str().empty())
 		o << "\n## Failures\n\nFirst error line of each; the logs are in runs/SEQUENCE/CONFIG/ (vlo-run.err, eval_*.err).\n\n"
 		  << "| run | error |\n|---|---|\n" << fails.str();
+	std::ostringstream reports;  // each run's own report (vlo-run's report.md), where it wrote one
+	for (const auto& r : rs)
+		if (std::filesystem::is_regular_file(r.dir + "/report.md"))
+			reports << "- [" << r.sequence << " / " << r.config << "](runs/" << r.sequence << "/" << r.config << "/report.md)\n";
+	if (!reports.str().empty()) o << "\n## Run reports\n\n" << reports.str();
 	if (!snapshots.empty())
 	{
 		o << "\n## Trajectories\n\nTop-down, every configuration against the ground truth (Sim(3)-aligned where the "

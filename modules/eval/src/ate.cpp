@@ -53,10 +53,11 @@ AteResult computeAte(const Trajectory& gt, const Trajectory& est, Alignment alig
 		// A diagnostic only: a motionless estimate has no scale, which is not an error for SE(3).
 	}
 
+	const std::vector<double> errors = ateErrors(gt, est, r.alignment);
 	double sq_t = 0, sq_r = 0, sum_t = 0;
 	for (std::size_t i = 0; i < est.size(); ++i)
 	{
-		const double e = (dst[i] - r.alignment * src[i]).norm();
+		const double e = errors[i];
 		sq_t += e * e;
 		sum_t += e;
 		r.ate_max_m = std::max(r.ate_max_m, e);
@@ -69,5 +70,14 @@ AteResult computeAte(const Trajectory& gt, const Trajectory& est, Alignment alig
 	r.ate_mean_m = sum_t / n;
 	if (gt_has_rotation) r.are_rmse_deg = std::sqrt(sq_r / n) * 180.0 / M_PI;
 	return r;
+}
+
+std::vector<double> ateErrors(const Trajectory& gt, const Trajectory& est, const Sim3& alignment)
+{
+	if (gt.size() != est.size()) throw std::invalid_argument("ateErrors: trajectories must be paired by index");
+	std::vector<double> e(est.size());
+	for (std::size_t i = 0; i < est.size(); ++i)
+		e[i] = (gt[i].pose.translation() - alignment * Eigen::Vector3d(est[i].pose.translation())).norm();
+	return e;
 }
 }  // namespace vlo

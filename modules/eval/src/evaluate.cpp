@@ -81,6 +81,18 @@ EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptio
 	return r;
 }
 
+Trajectory alignedEstimate(const EvalReport& r)
+{
+	Trajectory aligned = r.association.est;
+	if (r.ate)
+		for (auto& p : aligned)
+		{
+			p.pose.translation() = r.ate->alignment * Eigen::Vector3d(p.pose.translation());
+			p.pose.linear() = r.ate->alignment.R * p.pose.linear();
+		}
+	return aligned;
+}
+
 namespace
 {
 /// Positions along a line (a straight drive): an alignment's rotation about that line is then

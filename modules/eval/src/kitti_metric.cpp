@@ -1,3 +1,4 @@
+#include <vlo/eval/association.h>
 #include <vlo/eval/kitti_metric.h>
 
 #include <algorithm>
@@ -41,6 +42,7 @@ KittiResult kittiMetric(const Trajectory& gt, const Trajectory& est, const Kitti
 	if (opts.step == 0) throw std::invalid_argument("kittiMetric: step must be positive");
 	KittiResult r;
 	const std::vector<double> dist = trajectoryDistances(gt);
+	const double period = medianTimeStep(gt);
 	for (std::size_t first = 0; first < gt.size(); first += opts.step)
 		for (const double len : opts.lengths)
 		{
@@ -49,7 +51,9 @@ KittiResult kittiMetric(const Trajectory& gt, const Trajectory& est, const Kitti
 			const Eigen::Isometry3d dG = gt[first].pose.inverse() * gt[last].pose;
 			const Eigen::Isometry3d dP = est[first].pose.inverse() * est[last].pose;
 			const Eigen::Isometry3d E = dP.inverse() * dG;
-			r.segments.push_back({first, last, len, E.translation().norm() / len, devkitRotationError(E.linear()) / len});
+			const double speed = period > 0 ? len / (period * double(last - first + 1)) : NAN;
+			r.segments.push_back(
+				{first, last, len, E.translation().norm() / len, devkitRotationError(E.linear()) / len, speed});
 		}
 	for (const double len : opts.lengths)
 	{

@@ -11,6 +11,7 @@
 #include <vlo/pipeline/run.h>
 #include <vlo/pipeline/run_folder.h>
 #include <vlo/pipeline/run_outputs.h>
+#include <vlo/pipeline/run_report.h>
 #include <vlo/pipeline/stage_timings.h>
 
 #include <unistd.h>
@@ -123,6 +124,7 @@ RunSummary runPipeline(const RunRequest& req)
 	summary.reader_stats = reader.statsSummary();
 	summary.stage_timings = stageTimings(outputs.table);
 	writeSummaryJson(req.out + "/summary.json", summary, req);
+	writeRunReport(req.out, summary, req, outputs.table, popt.snapshots);
 	folder.recordWritten();
 	logger().logStr(mrpt::system::LVL_DEBUG, summary.reader_stats);
 	logger().logStr(mrpt::system::LVL_INFO, "time per stage over " + std::to_string(summary.frames) + " frames (frames.csv):\n" +

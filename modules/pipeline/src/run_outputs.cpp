@@ -1,6 +1,8 @@
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
 #include <vlo/core/log.h>
+#include <vlo/eval/association.h>
+#include <vlo/eval/umeyama.h>
 #include <vlo/io/pcd.h>
 #include <vlo/pipeline/run_outputs.h>
 #include <vlo/viz/map3d.h>
@@ -25,6 +27,31 @@ double maxStep(const Trajectory& t)
 	return m;
 }
 
+/// Mode vo alone: the VO's path is in map units, so it is Sim(3)-aligned to the ground truth when there is
+/// one, and says so; without one, the legend and title say "unscaled" and lengths and axes are in map units.
+void presentUnscaledVo(NamedTrajectory& vo, const Trajectory& gt, TopDownStyle& style)
+{
+	const Association a = associate(gt, vo.traj);
+	if (a.matched() >= 3)
+	{
+		std::vector<Eigen::Vector3d> src, dst;
+		for (std::size_t i = 0; i < a.matched(); ++i)
+			src.push_back(a.est[i].pose.translation()), dst.push_back(a.gt[i].pose.translation());
+		const Sim3 S = umeyama(src, dst, true);
+		for (auto& p : vo.traj)
+		{
+			p.pose.translation() = S * Eigen::Vector3d(p.pose.translation());
+			p.pose.linear() = S.R * p.pose.linear();
+		}
+		vo.name += " (Sim(3)-aligned to the ground truth)";
+		style.title += ", VO unscaled: Sim(3)-aligned to the ground truth";
+		return;
+	}
+	vo.name += " (unscaled)";
+	style.title += ", VO unscaled (map units, not metres)";
+	style.unit = "map units";
+}
+
 /// Snapshots are a convenience: a failure to render is reported, not fatal to the run.
 void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::string& gtPath)
 {
@@ -45,6 +72,7 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::stri
 	if (trajs.empty()) return;
 	TopDownStyle td;
 	td.title = "vlo-run (" + o.plan.name + "), " + std::to_string(o.table.rows()) + " frames";
+	if (o.plan.name == "vo") presentUnscaledVo(trajs.back(), gt, td);
 	renderTopDown(trajs, gt.empty() ? nullptr : &gt, dir + "/topdown.png", td);
 	if (!o.map.empty())
 	{
@@ -56,7 +84,9 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::stri
 	{
 		if (!f.has_image || !f.has_scan) continue;
 		ProjectedScanStyle ps;
-		ps.title = "frame " + std::to_string(f.index);
+		char t[48];
+		std::snprintf(t, sizeof t, "  (t = %.3f s)", f.t);  // as vlo-snapshot's
+		ps.title = "frame " + std::to_string(f.index) + t;
 		char name[64];
 		std::snprintf(name, sizeof(name), "/frame_%06zu.png", f.index);
 		renderProjectedScan(f.image, f.scan, f.rig, dir + name, {}, ps);

@@ -100,10 +100,15 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		{
 			const auto& e = snap.estimate;
 			ProjectedScanStyle ps;
-			char title[160];
-			std::snprintf(title, sizeof(title), "C(%zu)->C(%zu): s %.3f, %d of %d inliers (%s)", snap.prev.index,
-				snap.cur_index, e.scale, e.counts.inliers, e.counts.triangulated, scale::toString(e.reason));
-			ps.title = title;
+			char head[96], estimate[96];
+			std::snprintf(head, sizeof(head), "frames %zu->%zu (t = %.3f s): ", snap.prev.index, snap.cur_index,
+				snap.prev.t);
+			if (e.scale > 0)  // 0: the estimator stopped before it computed a scale
+				std::snprintf(estimate, sizeof(estimate), "scale %.3f, %d of %d triangulated points inliers", e.scale,
+					e.counts.inliers, e.counts.triangulated);
+			else
+				std::snprintf(estimate, sizeof(estimate), "no estimate");
+			ps.title = std::string(head) + estimate + " (" + scale::toString(e.reason) + ")";
 			char name[64];
 			std::snprintf(name, sizeof(name), "/scale_%06zu.png", snap.cur_index);
 			renderProjectedScan(snap.prev.image, snap.prev.scan, snap.prev.rig, dir + name, scale::scaleOverlay(e), ps);

@@ -6,7 +6,7 @@ namespace vlo::scale
 {
 namespace
 {
-// Legend order: what matters most first, since the panel drops items that do not fit.
+// Legend order: what matters most first (an image too narrow for the legend drops its last items).
 constexpr std::array<Stage, 6> kLegendOrder = {
 	Stage::None, Stage::Ransac, Stage::Epipolar, Stage::Gradient, Stage::Triangulation, Stage::Tracking};
 }
@@ -16,7 +16,7 @@ Rgb stageColor(Stage s)
 	switch (s)
 	{
 		case Stage::None: return {0, 158, 115};  // bluish green
-		case Stage::Ransac: return {230, 159, 0};  // orange
+		case Stage::Ransac: return {0, 114, 178};  // blue: unlike the vermillion of the epipolar check
 		case Stage::Epipolar: return {213, 94, 0};  // vermillion
 		case Stage::Gradient: return {204, 121, 167};  // reddish purple
 		case Stage::Triangulation: return {240, 228, 66};  // yellow
@@ -30,11 +30,11 @@ const char* stageLabel(Stage s)
 	switch (s)
 	{
 		case Stage::None: return "inlier";
-		case Stage::Ransac: return "RANSAC";
-		case Stage::Epipolar: return "epi";
-		case Stage::Gradient: return "grad";
-		case Stage::Triangulation: return "tri";
-		case Stage::Tracking: return "lost";
+		case Stage::Ransac: return "RANSAC outlier";
+		case Stage::Epipolar: return "off epipolar line";
+		case Stage::Gradient: return "weak gradient";
+		case Stage::Triangulation: return "not triangulated";
+		case Stage::Tracking: return "track lost";
 	}
 	return "?";
 }

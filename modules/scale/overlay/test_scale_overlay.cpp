@@ -23,8 +23,8 @@ TEST(ScaleOverlay, ColoursByRejectingStageWithCountsInTheLegend)
 	EXPECT_TRUE(o.points.back().color == stageColor(Stage::None));
 	ASSERT_EQ(o.legend.size(), 3u);
 	EXPECT_EQ(o.legend[0].first, "inlier 2");
-	EXPECT_EQ(o.legend[1].first, "epi 1");
-	EXPECT_EQ(o.legend[2].first, "lost 1");
+	EXPECT_EQ(o.legend[1].first, "off epipolar line 1");
+	EXPECT_EQ(o.legend[2].first, "track lost 1");
 	EXPECT_TRUE(o.legend[1].second == stageColor(Stage::Epipolar));
 	// Every stage has its own colour.
 	const Stage all[] = {Stage::None, Stage::Tracking, Stage::Epipolar, Stage::Gradient, Stage::Triangulation, Stage::Ransac};

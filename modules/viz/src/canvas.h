@@ -37,7 +37,7 @@ void axes(cv::Mat& img, const PlotArea& a, double xstep, double ystep, const std
 
 struct LegendItem
 {
-	enum Kind { Line, Dot, Square, Ring } kind = Line;
+	enum Kind { Line, Dot, Square, Ring, Diamond } kind = Line;
 	std::string label;
 	Rgb color;
 	int thickness = 2;
@@ -45,6 +45,9 @@ struct LegendItem
 cv::Size legendSize(const std::vector<LegendItem>& items);
 /// Boxed legend, one item per row, with a white background over whatever is below.
 void legend(cv::Mat& img, cv::Point topLeft, const std::vector<LegendItem>& items);
+
+/// A filled diamond with an ink outline, e.g. where a trajectory starts later than the drive.
+void diamond(cv::Mat& img, cv::Point center, int radius, Rgb fill);
 
 /// Top-left of a box of `size` in the corner of `area` that covers the fewest `pts`, skipping `taken`
 /// (an earlier box). `pad` pixels from the area's edges.

@@ -38,6 +38,7 @@ void legend(cv::Mat& img, cv::Point tl, const std::vector<LegendItem>& items)
 				cv::rectangle(img, cv::Rect(xm - 6, cy - 6, 13, 13), c, cv::FILLED);
 				cv::rectangle(img, cv::Rect(xm - 6, cy - 6, 13, 13), kInk, 1);
 				break;
+			case LegendItem::Diamond: diamond(img, {xm, cy}, 8, it.color); break;
 			case LegendItem::Ring:
 				cv::circle(img, {xm, cy}, 7, kWhite, cv::FILLED, cv::LINE_AA);
 				cv::circle(img, {xm, cy}, 7, c, 2, cv::LINE_AA);
@@ -45,6 +46,13 @@ void legend(cv::Mat& img, cv::Point tl, const std::vector<LegendItem>& items)
 		}
 		text(img, it.label, {x0 + kSwatch + 10, cy}, kMedium, kInk, HAlign::Left, VAlign::Middle);
 	}
+}
+
+void diamond(cv::Mat& img, cv::Point c, int r, Rgb fill)
+{
+	const std::vector<cv::Point> pts{{c.x, c.y - r}, {c.x + r, c.y}, {c.x, c.y + r}, {c.x - r, c.y}};
+	cv::fillConvexPoly(img, pts, bgr(fill), cv::LINE_AA);
+	cv::polylines(img, pts, true, kInk, 1, cv::LINE_AA);
 }
 
 void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const std::string& label,

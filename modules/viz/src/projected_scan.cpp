@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace vlo
 {
@@ -56,24 +57,28 @@ void panel(cv::Mat& out, int top, double maxDepth, const ImageOverlay& overlay, 
 	const std::string info = fits(both, canvas::kMedium) || title.empty() ? both : title;
 	const double size = fits(info, canvas::kMedium) ? canvas::kMedium : canvas::kSmall;
 	canvas::text(out, info, {out.cols - 16, top + 19}, size, canvas::kInk, canvas::HAlign::Right, canvas::VAlign::Middle);
-	std::vector<int> widths;
-	int total = 0;
-	for (const auto& item : overlay.legend)
-	{
-		const int w = 26 + canvas::textSize(item.first, canvas::kMedium).width + 24;
-		if (out.cols - 16 - (total + w) < left) break;  // no room: better missing than overlapping
-		widths.push_back(w), total += w;
-	}
-	int x = out.cols - 16 - total + 24;
+	// Every legend item: at the normal size right of the colour bar, else smaller, else in a row of its own
+	// below the bar's ticks; only an image too narrow for that drops items (better missing than overlapping).
+	const auto widthsAt = [&](double size) {
+		std::vector<int> w;
+		for (const auto& item : overlay.legend) w.push_back(26 + canvas::textSize(item.first, size).width + 18);
+		return w;
+	};
+	double legendSize = canvas::kMedium;
+	std::vector<int> widths = widthsAt(legendSize);
+	const auto total = [&] { return std::accumulate(widths.begin(), widths.end(), 0); };
+	if (out.cols - 16 - total() < left) widths = widthsAt(legendSize = canvas::kSmall);
+	int y = top + 46, x0 = left;
+	if (out.cols - 16 - total() < left) y = top + 54, x0 = 16;
+	while (!widths.empty() && out.cols - 16 - total() < x0) widths.pop_back();
+	int x = out.cols - 16 - total() + 18;
 	for (size_t k = 0; k < widths.size(); ++k)
 	{
 		const auto& [name, c] = overlay.legend[k];
-		const int y = top + 46;
 		// On a grey tile like the image, so that white or black markers show too.
 		cv::rectangle(out, cv::Rect(x - 2, y - 9, 19, 19), cv::Scalar(128, 128, 128), cv::FILLED);
 		cv::circle(out, {x + 7, y}, 6, canvas::bgr(c), 2, cv::LINE_AA);
-		canvas::text(
-			out, name, {x + 24, y}, canvas::kMedium, canvas::kInk, canvas::HAlign::Left, canvas::VAlign::Middle);
+		canvas::text(out, name, {x + 24, y}, legendSize, canvas::kInk, canvas::HAlign::Left, canvas::VAlign::Middle);
 		x += widths[k];
 	}
 }

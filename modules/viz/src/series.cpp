@@ -25,6 +25,26 @@ void dashedLine(cv::Mat& img, cv::Point a, cv::Point b, cv::Scalar c)
 		cv::line(img, a + (b - a) * (s / len), a + (b - a) * (e / len), c, 1, cv::LINE_AA);
 	}
 }
+cv::Scalar tint(Rgb c) { return canvas::bgr({std::uint8_t(c.r / 2 + 128), std::uint8_t(c.g / 2 + 128), std::uint8_t(c.b / 2 + 128)}); }
+
+/// Fills between series k and k - 1 (or y = 0), sample by sample; non-finite samples leave gaps.
+void fillBelow(cv::Mat& plot, const PlotArea& a, const std::vector<Series>& series, size_t k, cv::Point2d off)
+{
+	const Series& s = series[k];
+	if (k > 0 && series[k - 1].x != s.x)
+		failInput("series plot", "'" + s.name + "' is filled down to '" + series[k - 1].name + "', which has other x values");
+	const Rgb c = s.color.value_or(paletteColor(k));
+	for (size_t i = 1; i < s.x.size(); ++i)
+	{
+		const double b0 = k > 0 ? series[k - 1].y[i - 1] : 0.0, b1 = k > 0 ? series[k - 1].y[i] : 0.0;
+		const double v[] = {s.x[i - 1], s.x[i], s.y[i - 1], s.y[i], b0, b1};
+		if (!std::all_of(std::begin(v), std::end(v), [](double d) { return std::isfinite(d); })) continue;
+		const std::vector<cv::Point> quad{canvas::round(a.toPixel(s.x[i - 1], s.y[i - 1]) + off),
+			canvas::round(a.toPixel(s.x[i], s.y[i]) + off), canvas::round(a.toPixel(s.x[i], b1) + off),
+			canvas::round(a.toPixel(s.x[i - 1], b0) + off)};
+		cv::fillConvexPoly(plot, quad, tint(c));
+	}
+}
 }  // namespace
 
 PlotArea seriesArea(const std::vector<Series>& series, const SeriesStyle& style)
@@ -73,6 +93,8 @@ cv::Mat drawSeries(const std::vector<Series>& series, const SeriesStyle& style)
 		const int y = int(std::lround(a.toPixel(0, *style.reference_y).y + off.y));
 		dashedLine(plot, {0, y}, {a.rect.width, y}, canvas::kInk);
 	}
+	for (size_t k = 0; k < series.size(); ++k)
+		if (series[k].fill) fillBelow(plot, a, series, k, off);
 	std::vector<canvas::LegendItem> items;
 	std::vector<cv::Point2d> all;
 	for (size_t k = 0; k < series.size(); ++k)

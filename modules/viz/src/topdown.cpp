@@ -25,25 +25,66 @@ std::vector<cv::Point2d> pixels(const Trajectory& t, const PlotArea& a)
 	return px;
 }
 
-/// `metres` written with `m_format`, or from `km_from` metres on in kilometres with `km_format`.
-std::string lengthText(double metres, double km_from, const char* m_format, const char* km_format)
+/// A length `v` in `unit` with the printf `format` for its number; metres from `km_from` on in km (an unscaled
+/// VO's map units never become km).
+std::string lengthText(double v, const std::string& unit, double km_from, const char* format)
 {
-	char buf[32];
-	const bool km = metres >= km_from;
-	std::snprintf(buf, sizeof buf, km ? km_format : m_format, km ? metres / 1000 : metres);
-	return buf;
+	char buf[48];
+	const bool km = unit == "m" && v >= km_from;
+	std::snprintf(buf, sizeof buf, format, km ? v / 1000 : v);
+	return std::string(buf) + (km ? " km" : " " + unit);
 }
 
-void startEndMarkers(cv::Mat& img, const std::vector<cv::Point2d>& px, Rgb color)
+/// A path's length: one decimal below 100, so that short paths that differ by a few percent show it.
+std::string pathLengthText(double v, const std::string& unit)
 {
-	if (px.empty()) return;
-	const cv::Point s = canvas::round(px.front()), e = canvas::round(px.back());
-	// Start rings are neutral: every trajectory starts at the origin, so colours would hide each other.
+	const bool km = unit == "m" && v >= 10000;
+	return lengthText(v, unit, 10000, km || v < 100 ? "%.1f" : "%.0f");
+}
+
+/// The largest of the values that colour the first path (checked against its pose count); -1 when none.
+double largestValue(const std::vector<NamedTrajectory>& trajs, const std::vector<double>& values)
+{
+	if (values.empty()) return -1;
+	if (trajs.empty() || values.size() != trajs[0].traj.size())
+		failInput("top-down view", std::to_string(values.size()) + " values for " +
+				std::to_string(trajs.empty() ? 0 : trajs[0].traj.size()) + " poses of the first trajectory");
+	double vmax = 0;
+	for (const double v : values)
+		if (std::isfinite(v)) vmax = std::max(vmax, v);
+	return vmax;
+}
+
+Rgb valueColor(double v, double vmax) { return turbo(vmax > 0 ? v / vmax : 0); }
+
+/// The drive's start is one neutral ring (every trajectory that starts there shares it); a trajectory
+/// that starts elsewhere (a VO that initialised later) gets a diamond in its colour there. Every end is
+/// a square in its trajectory's colour. Returns whether a diamond was drawn.
+bool startEndMarkers(cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths)
+{
+	const std::vector<cv::Point2d>* first = nullptr;
+	for (const auto& [px, c] : paths)
+		if (!px.empty() && !first) first = &px;
+	if (!first) return false;
+	const cv::Point s = canvas::round(first->front());
+	bool late = false;
+	for (const auto& [px, c] : paths)
+	{
+		if (px.empty()) continue;
+		const cv::Point e = canvas::round(px.back());
+		const cv::Rect sq(e.x - 6, e.y - 6, 13, 13);
+		cv::rectangle(img, sq, canvas::bgr(c), cv::FILLED);
+		cv::rectangle(img, sq, canvas::kInk, 1);
+	}
+	for (const auto& [px, c] : paths)
+		if (!px.empty() && cv::norm(px.front() - first->front()) > 4)
+		{
+			canvas::diamond(img, canvas::round(px.front()), 9, c);
+			late = true;
+		}
 	cv::circle(img, s, 7, canvas::kWhite, cv::FILLED, cv::LINE_AA);
 	cv::circle(img, s, 7, canvas::kInk, 2, cv::LINE_AA);
-	const cv::Rect sq(e.x - 6, e.y - 6, 13, 13);
-	cv::rectangle(img, sq, canvas::bgr(color), cv::FILLED);
-	cv::rectangle(img, sq, canvas::kInk, 1);
+	return late;
 }
 
 /// Round-length bar in metres, boxed, at `tl`.
@@ -92,7 +133,8 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	const PlotArea a = topDownArea(trajs, gt, style);
 	cv::Mat img(style.height, style.width, CV_8UC3, canvas::kWhite);
 	const double step = niceStep((a.xmax - a.xmin) / std::max(2.0, a.rect.width / 130.0));
-	canvas::axes(img, a, step, step, "x [m]  (forward at the first frame)", "y [m]  (left at the first frame)");
+	canvas::axes(img, a, step, step, "x [" + style.unit + "]  (forward at the first frame)",
+		"y [" + style.unit + "]  (left at the first frame)");
 	if (!style.title.empty())
 		canvas::text(img, style.title, {style.width / 2, 18}, canvas::kLarge, canvas::kInk, canvas::HAlign::Center,
 			canvas::VAlign::Top, 2);
@@ -101,16 +143,20 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	std::vector<cv::Point2d> all;  // every drawn pixel position, to keep boxes off the data
 	cv::Mat plot = img(a.rect);  // clip lines to the plot area
 	const cv::Point2d off(-a.rect.x, -a.rect.y);
-	auto draw = [&](const Trajectory& t, Rgb c, int width) {
+	const double vmax = largestValue(trajs, style.values);
+	auto draw = [&](const Trajectory& t, Rgb c, int width, const std::vector<double>& values = {}) {
 		auto px = pixels(t, a);
 		all.insert(all.end(), px.begin(), px.end());
 		for (auto& p : px) p += off;
-		if (!px.empty()) canvas::polyline(plot, px, canvas::bgr(c), width);
+		if (values.empty() && !px.empty()) canvas::polyline(plot, px, canvas::bgr(c), width);
+		for (size_t i = 1; i < px.size() && !values.empty(); ++i)
+			canvas::polyline(plot, {px[i - 1], px[i]}, canvas::bgr(valueColor(0.5 * (values[i - 1] + values[i]), vmax)),
+				width + 1);
 		return px;
 	};
 	auto label = [&](const std::string& name, const Trajectory& t) {
 		if (t.empty()) return name + "  (empty)";
-		return style.show_lengths ? name + "  (" + lengthText(pathLength(t), 10000, "%.0f m", "%.1f km") + ")" : name;
+		return style.show_lengths ? name + "  (" + pathLengthText(pathLength(t), style.unit) + ")" : name;
 	};
 	std::vector<std::pair<std::vector<cv::Point2d>, Rgb>> markers;
 	if (gt)
@@ -118,24 +164,46 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 		markers.push_back({draw(*gt, kGroundTruthColor, style.line_width + 3), kGroundTruthColor});
 		items.push_back({canvas::LegendItem::Line, label(style.gt_name, *gt), kGroundTruthColor, style.line_width + 3});
 	}
+	// The first trajectory is the main result: drawn last, above the others; the legend keeps the list order.
+	std::vector<std::pair<std::vector<cv::Point2d>, Rgb>> paths(trajs.size());
+	for (size_t i = trajs.size(); i-- > 0;)
+	{
+		const std::vector<double> none, &values = i == 0 ? style.values : none;
+		const Rgb c = values.empty() ? trajs[i].color.value_or(paletteColor(i)) : valueColor(0.5 * vmax, vmax);
+		paths[i] = {draw(trajs[i].traj, c, style.line_width, values), c};
+	}
 	for (size_t i = 0; i < trajs.size(); ++i)
 	{
-		const Rgb c = trajs[i].color.value_or(paletteColor(i));
-		markers.push_back({draw(trajs[i].traj, c, style.line_width), c});
-		items.push_back({canvas::LegendItem::Line, label(trajs[i].name, trajs[i].traj), c, style.line_width + 1});
+		const std::string name = i > 0 || style.values.empty() ? trajs[i].name
+															   : trajs[i].name + ", coloured by " + style.value_label;
+		items.push_back({canvas::LegendItem::Line, label(name, trajs[i].traj), paths[i].second, style.line_width + 1});
 	}
-	for (const auto& [px, c] : markers) startEndMarkers(plot, px, c);
-	items.push_back({canvas::LegendItem::Ring, "start", Rgb{40, 40, 40}});
+	markers.insert(markers.end(), paths.begin(), paths.end());
+	const bool late = startEndMarkers(plot, markers);
+	items.push_back({canvas::LegendItem::Ring, "start of the drive", Rgb{40, 40, 40}});
+	if (late) items.push_back({canvas::LegendItem::Diamond, "start of a path that began later", Rgb{200, 200, 200}});
 	items.push_back({canvas::LegendItem::Square, "end", Rgb{200, 200, 200}});
 
 	const cv::Size lsz = canvas::legendSize(items);
 	const cv::Point ltl = canvas::emptiestCorner(a.rect, lsz, all);
 	canvas::legend(img, ltl, items);
 
+	if (vmax >= 0)
+	{
+		// The axes already give the metres; the colour bar is what a coloured path needs.
+		const int barW = 260, labelW = canvas::textSize(style.value_label, canvas::kMedium).width;
+		const cv::Size csz(barW + labelW + 44, 58);
+		const cv::Point tl = canvas::emptiestCorner(a.rect, csz, all, cv::Rect(ltl, lsz));
+		cv::Mat roi = img(cv::Rect(tl, csz));
+		roi.convertTo(roi, -1, 0.15, 255 * 0.85);
+		canvas::colorBar(img, cv::Rect(tl.x + 14, tl.y + 10, barW, 16), 0, vmax, style.value_label,
+			[&](double t) { return valueColor(t * vmax, vmax); });
+		return img;
+	}
 	const double barM = niceStep((a.xmax - a.xmin) * 0.18);
 	const int barPx = int(std::lround(barM * a.pixelsPerUnitX()));
 	const cv::Size bsz(barPx + 40, 52);
-	scaleBar(img, canvas::emptiestCorner(a.rect, bsz, all, cv::Rect(ltl, lsz)), bsz, barPx, lengthText(barM, 1000, "%g m", "%g km"));
+	scaleBar(img, canvas::emptiestCorner(a.rect, bsz, all, cv::Rect(ltl, lsz)), bsz, barPx, lengthText(barM, style.unit, 1000, "%g"));
 	return img;
 }
 

@@ -89,20 +89,21 @@ TEST_F(Example, TopDownOfAOneKilometreDrive)
 	const Rgb rows[] = {kGroundTruthColor, paletteColor(0), paletteColor(1), kStartInk, kEndFill};
 	for (int i = 0; i < 5; ++i) EXPECT_TRUE(test::colorNear(img, test::legendSwatch(legend, i), rows[i], 7)) << i;
 
-	// Each path where the plot mapping puts its poses (ground truth first, then the estimates on top).
+	// Each path where the plot mapping puts its poses, in drawing order: ground truth, then the estimates
+	// with the first listed (the main result) on top.
 	const PlotArea a = topDownArea(trajs, &gt, style);
 	auto pixels = [&](const Trajectory& t) {
 		std::vector<cv::Point2d> px;
 		for (const auto& p : t) px.push_back(a.toPixel(p.pose.translation().x(), p.pose.translation().y()));
 		return px;
 	};
-	const std::vector<Line> lines{{pixels(gt), kGroundTruthColor}, {pixels(trajs[0].traj), paletteColor(0)},
-		{pixels(trajs[1].traj), paletteColor(1)}};
+	const std::vector<Line> lines{{pixels(gt), kGroundTruthColor}, {pixels(trajs[1].traj), paletteColor(1)},
+		{pixels(trajs[0].traj), paletteColor(0)}};
 	const auto checked = expectLinesVisible(img, lines, legend, 20, 3);
 	for (size_t i = 0; i < lines.size(); ++i) EXPECT_GE(checked[i], 5) << "line " << i << " hidden almost everywhere";
 	// End markers: a square of each estimate's colour on its last pose.
-	EXPECT_TRUE(test::colorNear(img, lines[1].px.back(), paletteColor(0), 0, 1));
-	EXPECT_TRUE(test::colorNear(img, lines[2].px.back(), paletteColor(1), 0, 1));
+	EXPECT_TRUE(test::colorNear(img, lines[1].px.back(), paletteColor(1), 0, 1));
+	EXPECT_TRUE(test::colorNear(img, lines[2].px.back(), paletteColor(0), 0, 1));
 }
 
 TEST_F(Example, Map3DOfAStreet)

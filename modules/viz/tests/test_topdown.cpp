@@ -94,3 +94,21 @@ TEST(TopDown, FailedWriteLeavesNoFile)
 	const std::string png = ::testing::TempDir() + "no_such_dir/x.png";
 	EXPECT_THROW(renderTopDown({{"est", diagonal(0), {}}}, nullptr, png), InputError);
 }
+
+TEST(TopDown, OneStartRingForTheDriveAndADiamondWhereALaterPathBegins)
+{
+	const Trajectory a = diagonal(0), late(a.begin() + 30, a.end());
+	const cv::Mat together = drawTopDown({{"lo", a, {}}, {"vo", a, {}}}, nullptr);
+	const cv::Rect box2 = test::findLegend(together);
+	EXPECT_EQ(box2.height, 2 * 10 + 24 * 4 - 6);  // lo, vo, start, end: no diamond row
+
+	const std::vector<NamedTrajectory> trajs{{"lo", a, {}}, {"vo", late, {}}};
+	const cv::Mat img = drawTopDown(trajs, nullptr);
+	const PlotArea area = topDownArea(trajs, nullptr);
+	const cv::Rect box = test::findLegend(img);
+	EXPECT_EQ(box.height, 2 * 10 + 24 * 5 - 6);
+	EXPECT_TRUE(test::colorNear(img, test::legendSwatch(box, 3), Rgb{200, 200, 200}, 2, 10));  // the diamond row
+	const auto& p = late.front().pose.translation();
+	EXPECT_TRUE(test::colorNear(img, area.toPixel(p.x(), p.y()), paletteColor(1), 2, 10));  // diamond in vo's colour
+	EXPECT_TRUE(test::colorNear(img, area.toPixel(0, 0), Rgb{255, 255, 255}, 1, 10));  // the ring's white centre
+}

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace vlo
 {
@@ -32,4 +33,7 @@ struct AteResult
 /// gt and est are pairs by index (see associate()), at least 3 of them. ARE uses the rotation angle of
 /// G_i^-1 * A * P_i; pass gt_has_rotation = false for translation-only ground truth.
 AteResult computeAte(const Trajectory& gt, const Trajectory& est, Alignment align, bool gt_has_rotation = true);
+
+/// Each pair's position error |g_i - alignment * p_i| (m): what ATE statistics summarise, e.g. to colour a path.
+std::vector<double> ateErrors(const Trajectory& gt, const Trajectory& est, const Sim3& alignment);
 }  // namespace vlo

@@ -49,6 +49,10 @@ struct EvalReport
 /// Throws InputError (naming the files in opts) when fewer than 3 poses overlap in time.
 EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptions& opts);
 
+/// The matched estimate after the ATE alignment (as matched when there is no ATE): a Sim(3) is not an
+/// isometry, so positions take the scale and orientations only the rotation.
+Trajectory alignedEstimate(const EvalReport& r);
+
 /// The warnings of a report (evaluate() fills EvalReport::warnings with them).
 std::vector<std::string> plausibilityWarnings(const EvalReport& r);
 }  // namespace vlo

@@ -20,6 +20,9 @@ struct KittiSegment
 	double length = 0;  ///< nominal length (one of the options' lengths)
 	double t_err = 0;  ///< ||translation of the error|| / length (m/m)
 	double r_err = 0;  ///< rotation angle of the error / length (rad/m)
+	/// m/s: length / ((last - first + 1) * median frame period), the devkit's formula (which assumes 0.1 s);
+	/// NAN when the ground truth has no increasing timestamps.
+	double speed = 0;
 };
 
 struct KittiLengthStats

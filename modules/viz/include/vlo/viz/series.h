@@ -19,6 +19,9 @@ struct Series
 	std::optional<Rgb> color;  ///< default: paletteColor(index)
 	bool markers = false;  ///< a dot at each sample
 	bool line = true;  ///< samples joined by a line
+	/// Fill the area down to the previous series (to y = 0 for the first) with a light tint of the colour,
+	/// for stacked plots; the previous series must have the same x.
+	bool fill = false;
 };
 
 struct SeriesStyle

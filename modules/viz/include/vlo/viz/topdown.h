@@ -27,6 +27,11 @@ struct TopDownStyle
 	std::string gt_name = "ground truth";
 	int line_width = 2;  ///< estimates; ground truth is drawn wider underneath
 	bool show_lengths = true;  ///< path length after each legend name
+	std::string unit = "m";  ///< of the coordinates, on the axes, lengths and scale bar (e.g. "map units")
+	/// One value per pose of the first trajectory (e.g. its absolute error), or none. When given, that path is
+	/// coloured by them (turbo, from 0 to their largest) and a colour bar labelled value_label replaces the scale bar.
+	std::vector<double> values;
+	std::string value_label = "value";
 };
 
 /// The world -> pixel mapping drawTopDown uses. Throws InputError when there is no pose at all.

@@ -1,0 +1,25 @@
+#pragma once
+// report.md in a vlo-run folder: the summary table, the accuracy against --gt when given, and every
+// snapshot and plot of the folder embedded with relative links, readable in any Markdown viewer.
+#include <vlo/kernel/frame_table.h>
+#include <vlo/pipeline/run.h>
+
+#include <string>
+#include <vector>
+
+namespace vlo
+{
+/// snapshots/time_per_stage.png: each frame's ms_* stage times stacked (a stage with sub-stages, e.g. ms_vo
+/// beside ms_vo_extract, by its sub-stages; ms_total's remainder on top as "other"), with the 100 ms budget
+/// of a 10 Hz sensor dashed. Nothing when the table has no stage time.
+void writeStageTimePlot(const std::string& png, const FrameTable& table);
+
+/// The Markdown of the report; `files` are the folder's files (relative paths) that it may link to.
+std::string runReportMarkdown(const RunSummary& s, const RunRequest& req, const std::vector<std::string>& files,
+	const std::string& accuracy);
+
+/// Evaluates the final trajectory against req.gt (when given; accuracy plots into snapshots/ when
+/// `plots`), draws the stage-time plot (when `plots`) and writes DIR/report.md atomically, linking
+/// only files that exist in DIR.
+void writeRunReport(const std::string& dir, const RunSummary& s, const RunRequest& req, const FrameTable& table, bool plots);
+}  // namespace vlo

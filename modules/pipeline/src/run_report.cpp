@@ -1,0 +1,167 @@
+#include <vlo/core/atomic_file.h>
+#include <vlo/core/error.h>
+#include <vlo/core/log.h>
+#include <vlo/eval/report.h>
+#include <vlo/pipeline/run_report.h>
+#include <vlo/viz/eval_plots.h>
+#include <vlo/viz/series.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace vlo
+{
+namespace
+{
+constexpr double kBudgetMs = 100;  ///< one frame of a 10 Hz LiDAR
+
+/// Relative paths of the regular files under dir, sorted.
+std::vector<std::string> filesIn(const std::string& dir)
+{
+	std::vector<std::string> files;
+	for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+		if (e.is_regular_file()) files.push_back(std::filesystem::relative(e.path(), dir).generic_string());
+	std::sort(files.begin(), files.end());
+	return files;
+}
+
+bool has(const std::vector<std::string>& files, const std::string& f)
+{
+	return std::find(files.begin(), files.end(), f) != files.end();
+}
+
+std::string fixed(double v, int decimals)
+{
+	std::ostringstream o;
+	o.setf(std::ios::fixed);
+	o.precision(decimals);
+	o << v;
+	return o.str();
+}
+
+/// The evaluation as the report shows it: vlo-eval's table in a code block, or why there is none.
+std::string accuracyText(const std::string& dir, const RunSummary& s, const RunRequest& req, bool plots)
+{
+	const std::string traj = dir + "/" + s.final_trajectory;
+	if (req.gt.empty() || !std::filesystem::exists(traj)) return {};
+	EvalOptions o;
+	o.gt_name = req.gt;
+	o.est_name = s.final_trajectory;
+	o.align = s.mode == "vo" ? Alignment::Sim3 : Alignment::SE3;  // the VO alone is unscaled
+	try
+	{
+		const EvalReport r = evaluate(readTum(req.gt), readTum(traj), o);
+		if (plots) writeEvalPlots(dir + "/snapshots", {{s.mode, r}});
+		return "```\n" + formatTable(r) + "```\n";
+	}
+	catch (const std::exception& e)  // e.g. a ground truth of another drive: the run itself is fine
+	{
+		return std::string("Not evaluated: ") + e.what() + "\n";
+	}
+}
+}  // namespace
+
+void writeStageTimePlot(const std::string& png, const FrameTable& table)
+{
+	const std::vector<double> frame = table.numbers("frame"), total = table.numbers("ms_total");
+	std::vector<Series> stacked;
+	std::vector<double> sum(frame.size(), 0.0);
+	auto add = [&](const std::string& name, const std::vector<double>& ms) {
+		Series s;
+		s.name = name;
+		s.x = frame;
+		s.fill = true;
+		for (std::size_t i = 0; i < frame.size(); ++i)
+		{
+			sum[i] += std::isfinite(ms[i]) ? ms[i] : 0.0;  // a stage that did not run took no time
+			s.y.push_back(sum[i]);
+		}
+		stacked.push_back(std::move(s));
+	};
+	const std::vector<std::string> columns = table.columns();
+	// A stage with sub-stages (ms_vo beside ms_vo_extract, ...) is their sum: only the sub-stages are stacked,
+	// and its own overhead goes to "other".
+	const auto hasParts = [&](const std::string& c) {
+		return std::any_of(columns.begin(), columns.end(), [&](const std::string& d) { return d.rfind(c + "_", 0) == 0; });
+	};
+	for (const auto& c : columns)
+		if (c.rfind("ms_", 0) == 0 && c != "ms_total" && !hasParts(c)) add(c.substr(3), table.numbers(c));
+	if (stacked.empty() || total.size() != frame.size()) return;
+	std::vector<double> other(frame.size());
+	for (std::size_t i = 0; i < frame.size(); ++i) other[i] = std::max(0.0, total[i] - sum[i]);
+	add("other (reading, outputs)", other);
+	stacked.back().color = Rgb{170, 170, 170};  // not a stage: neutral, and never a palette colour again
+	const double top = *std::max_element(sum.begin(), sum.end());
+	SeriesStyle style;
+	style.title = "Time per frame per stage, stacked (dashed: the 100 ms budget of a 10 Hz sensor)";
+	style.xlabel = "frame";
+	style.ylabel = "time [ms]";
+	style.ymin = 0;
+	style.reference_y = kBudgetMs;
+	style.ymax = 1.3 * std::max(top, kBudgetMs);  // room above the stack for the legend
+	renderSeries(stacked, png, style);
+}
+
+std::string runReportMarkdown(const RunSummary& s, const RunRequest& req, const std::vector<std::string>& files,
+	const std::string& accuracy)
+{
+	std::ostringstream o;
+	o << "# vlo-run report: mode " << s.mode << ", " << s.frames << " frames\n\n";
+	o << "| | |\n|---|---|\n";
+	o << "| rawlog | `" << req.rawlog << "` |\n| ini | `" << req.ini << "` |\n";
+	if (!req.gt.empty()) o << "| ground truth | `" << req.gt << "` |\n";
+	o << "| frames | " << s.frames << " |\n";
+	o << "| time | " << fixed(s.seconds, 1) << " s, " << fixed(s.ms_per_frame, 1) << " ms per frame |\n";
+	o << "| path length | " << fixed(s.path_length_m, 1) << " m |\n";
+	o << "| largest step | " << fixed(s.max_step_m, 3) << " m |\n";
+	if (has(files, s.final_trajectory))
+		o << "| trajectory | [" << s.final_trajectory << "](" << s.final_trajectory << ") |\n";
+	for (const auto& [key, value] : s.figures) o << "| " << key << " | " << value << " |\n";
+	for (const char* f : {"summary.json", "frames.csv", "run.ini", "map.pcd"})
+		if (has(files, f)) o << "| " << f << " | [" << f << "](" << f << ") |\n";
+	if (!req.gt.empty()) o << "\n## Accuracy against the ground truth\n\n" << accuracy;
+	if (!s.stage_timings.empty())
+	{
+		o << "\n## Time per stage\n\n";
+		if (has(files, "snapshots/time_per_stage.png")) o << "![time per stage](snapshots/time_per_stage.png)\n\n";
+		o << "| stage | mean ms | p95 ms | max ms | frames |\n|---|---:|---:|---:|---:|\n";
+		for (const auto& t : s.stage_timings)
+			o << "| " << t.stage << " | " << fixed(t.mean, 2) << " | " << fixed(t.p95, 2) << " | " << fixed(t.max, 2)
+			  << " | " << t.count << " |\n";
+	}
+	bool heading = false;
+	for (const auto& f : files)
+	{
+		if (f.rfind("snapshots/", 0) != 0 || f.size() < 4 || f.compare(f.size() - 4, 4, ".png") != 0 ||
+			f == "snapshots/time_per_stage.png")
+			continue;
+		if (!heading) o << "\n## Snapshots and plots\n";
+		heading = true;
+		const std::string name = f.substr(10, f.size() - 14);
+		o << "\n### " << name << "\n\n![" << name << "](" << f << ")\n";
+	}
+	return o.str();
+}
+
+void writeRunReport(const std::string& dir, const RunSummary& s, const RunRequest& req, const FrameTable& table, bool plots)
+{
+	const std::string accuracy = accuracyText(dir, s, req, plots);
+	if (plots)
+	{
+		try
+		{
+			std::filesystem::create_directories(dir + "/snapshots");
+			writeStageTimePlot(dir + "/snapshots/time_per_stage.png", table);
+		}
+		catch (const std::exception& e)  // like the snapshots, a convenience: reported, not fatal
+		{
+			logger().logStr(mrpt::system::LVL_WARN, std::string("time-per-stage plot not written: ") + e.what());
+		}
+	}
+	AtomicOutputFile f(dir + "/report.md");
+	f.stream() << runReportMarkdown(s, req, filesIn(dir), accuracy);
+	f.commit();
+}
+}  // namespace vlo

@@ -91,7 +91,7 @@ void writeStageTimePlot(const std::string& png, const FrameTable& table)
 	if (stacked.empty() || total.size() != frame.size()) return;
 	std::vector<double> other(frame.size());
 	for (std::size_t i = 0; i < frame.size(); ++i) other[i] = std::max(0.0, total[i] - sum[i]);
-	add("other (reading, outputs)", other);
+	add("other (undistortion, map, untimed)", other);  // ms_total holds no reading (doc/FORMATS.md)
 	stacked.back().color = Rgb{170, 170, 170};  // not a stage: neutral, and never a palette colour again
 	const double top = *std::max_element(sum.begin(), sum.end());
 	SeriesStyle style;

@@ -70,7 +70,8 @@ PlotArea seriesArea(const std::vector<Series>& series, const SeriesStyle& style)
 	const int top = topMargin(style);
 	a.rect = cv::Rect(kLeft, top, style.width - kLeft - kRight, style.height - top - kBottom);
 	if (a.rect.width < 100 || a.rect.height < 60) failInput("series plot", "image size too small");
-	a.xmin = x0, a.xmax = x1;
+	a.xmin = style.xmin.value_or(x0), a.xmax = style.xmax.value_or(x1);
+	if (!(a.xmax > a.xmin)) failInput("series plot", "empty x range");
 	a.ymin = style.ymin.value_or(y0 - ypad), a.ymax = style.ymax.value_or(y1 + ypad);
 	if (!(a.ymax > a.ymin)) failInput("series plot", "empty y range");
 	return a;
@@ -116,11 +117,13 @@ cv::Mat drawSeries(const std::vector<Series>& series, const SeriesStyle& style)
 			const cv::Point2d p = a.toPixel(s.x[i], s.y[i]);
 			all.push_back(p);
 			run.push_back(p + off);
-			if (s.markers) cv::circle(plot, canvas::round(p + off), 3, c, cv::FILLED, cv::LINE_AA);
+			if (!s.markers) continue;
+			cv::circle(plot, canvas::round(p + off), s.marker_radius, c, cv::FILLED, cv::LINE_AA);
+			if (s.marker_radius > 3) cv::circle(plot, canvas::round(p + off), s.marker_radius, canvas::kInk, 1, cv::LINE_AA);
 		}
 		flush();
 		items.push_back({s.line ? canvas::LegendItem::Line : canvas::LegendItem::Dot, s.name,
-			s.color.value_or(paletteColor(k)), s.line ? 2 : 4});
+			s.color.value_or(paletteColor(k)), s.line ? 2 : s.marker_radius + 1});
 	}
 	if (!items.empty() && !(series.size() == 1 && series[0].name.empty()))
 		canvas::legend(img, canvas::emptiestCorner(a.rect, canvas::legendSize(items), all), items);
@@ -130,5 +133,58 @@ cv::Mat drawSeries(const std::vector<Series>& series, const SeriesStyle& style)
 void renderSeries(const std::vector<Series>& series, const std::string& png, const SeriesStyle& style)
 {
 	writePng(png, drawSeries(series, style));
+}
+
+namespace
+{
+/// Each panel's style with the figure's width and shared x range.
+std::vector<SeriesStyle> panelStyles(const std::vector<SeriesPanel>& panels)
+{
+	if (panels.empty()) failInput("series plot", "no panel to draw");
+	double x0 = INFINITY, x1 = -INFINITY;
+	for (const auto& p : panels)
+	{
+		const PlotArea a = seriesArea(p.series, p.style);
+		x0 = std::min(x0, a.xmin), x1 = std::max(x1, a.xmax);
+	}
+	std::vector<SeriesStyle> styles;
+	for (const auto& p : panels)
+	{
+		styles.push_back(p.style);
+		styles.back().width = panels.front().style.width;
+		styles.back().xmin = panels.front().style.xmin.value_or(x0);
+		styles.back().xmax = panels.front().style.xmax.value_or(x1);
+	}
+	return styles;
+}
+}  // namespace
+
+std::vector<PlotArea> seriesPanelAreas(const std::vector<SeriesPanel>& panels)
+{
+	const std::vector<SeriesStyle> styles = panelStyles(panels);
+	std::vector<PlotArea> areas;
+	int top = 0;
+	for (std::size_t k = 0; k < panels.size(); ++k)
+	{
+		areas.push_back(seriesArea(panels[k].series, styles[k]));
+		areas.back().rect.y += top;
+		top += styles[k].height;
+	}
+	return areas;
+}
+
+cv::Mat drawSeriesPanels(const std::vector<SeriesPanel>& panels)
+{
+	const std::vector<SeriesStyle> styles = panelStyles(panels);
+	std::vector<cv::Mat> drawn;
+	for (std::size_t k = 0; k < panels.size(); ++k) drawn.push_back(drawSeries(panels[k].series, styles[k]));
+	cv::Mat img;
+	cv::vconcat(drawn, img);
+	return img;
+}
+
+void renderSeriesPanels(const std::vector<SeriesPanel>& panels, const std::string& png)
+{
+	writePng(png, drawSeriesPanels(panels));
 }
 }  // namespace vlo

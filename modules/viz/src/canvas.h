@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vlo::canvas
@@ -48,6 +49,11 @@ void legend(cv::Mat& img, cv::Point topLeft, const std::vector<LegendItem>& item
 
 /// A filled diamond with an ink outline, e.g. where a trajectory starts later than the drive.
 void diamond(cv::Mat& img, cv::Point center, int radius, Rgb fill);
+
+/// Start and end markers of paths given as pixels with their colours, the drive's first: the drive's start is one
+/// neutral ring (every path that starts there shares it); a path that starts elsewhere (a VO that initialised later)
+/// gets a diamond in its colour there. Every end is a square in its path's colour, the first path's on top. Returns whether a diamond was drawn.
+bool startEndMarkers(cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths);
 
 /// Top-left of a box of `size` in the corner of `area` that covers the fewest `pts`, skipping `taken`
 /// (an earlier box). `pad` pixels from the area's edges.

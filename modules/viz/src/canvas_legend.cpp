@@ -55,6 +55,34 @@ void diamond(cv::Mat& img, cv::Point c, int r, Rgb fill)
 	cv::polylines(img, pts, true, kInk, 1, cv::LINE_AA);
 }
 
+bool startEndMarkers(cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths)
+{
+	const std::vector<cv::Point2d>* first = nullptr;
+	for (const auto& [px, c] : paths)
+		if (!px.empty() && !first) first = &px;
+	if (!first) return false;
+	const cv::Point s = canvas::round(first->front());
+	bool late = false;
+	for (auto it = paths.rbegin(); it != paths.rend(); ++it)  // the first path's end square on top
+	{
+		const auto& [px, c] = *it;
+		if (px.empty()) continue;
+		const cv::Point e = canvas::round(px.back());
+		const cv::Rect sq(e.x - 6, e.y - 6, 13, 13);
+		cv::rectangle(img, sq, canvas::bgr(c), cv::FILLED);
+		cv::rectangle(img, sq, canvas::kInk, 1);
+	}
+	for (const auto& [px, c] : paths)
+		if (!px.empty() && cv::norm(px.front() - first->front()) > 4)
+		{
+			canvas::diamond(img, canvas::round(px.front()), 9, c);
+			late = true;
+		}
+	cv::circle(img, s, 7, canvas::kWhite, cv::FILLED, cv::LINE_AA);
+	cv::circle(img, s, 7, canvas::kInk, 2, cv::LINE_AA);
+	return late;
+}
+
 void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const std::string& label,
 	const std::function<Rgb(double)>& colormap)
 {

@@ -77,7 +77,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		// Estimates once the map is metric (the initial one says how long a map unit was: off the plot).
 		const bool initial = d.kind == scale::ScaleDecision::Kind::Initial;
 		history_.add(cur.index, e.valid && !initial ? e.scale : std::nan(""), e.counts.inliers,
-			applied.initial ? 1.0 : applied.factor, cumulative_);
+			applied.initial ? 1.0 : applied.factor, cumulative_, !e.valid && e.scale > 0 ? e.scale : std::nan(""));
 		if (snapshot_every_ > 0 && cur.index % snapshot_every_ == 0)
 		{
 			Frame copy = *prev;

@@ -14,7 +14,8 @@ namespace
 {
 /// 60 frames: no metric map before frame 5 (the initial scale), then estimates 1 + 0.03 sin(k / 4); corrections 1.04
 /// at frame 20 and 0.97 at frame 40, so the cumulative factor is 1, then 1.04, then 1.04 * 0.97 = 1.0088; frame 30
-/// has no estimate (0 inliers); the inlier count is 100 + k otherwise.
+/// and 31 have no valid estimate (0 inliers) but rejected ones of 1.01 and 3 (off the plot); the
+/// inlier count is 100 + k otherwise.
 ScaleHistory history()
 {
 	ScaleHistory h;
@@ -23,8 +24,9 @@ ScaleHistory history()
 	{
 		const double correction = k == 20 ? 1.04 : k == 40 ? 0.97 : 1.0;
 		cum = k == 5 ? 1.0 : cum * correction;
-		const bool none = k < 5 || k == 30;
-		h.add(k, none ? NAN : 1 + 0.03 * std::sin(k / 4.0), none ? 0 : 100 + k, correction, cum);
+		const bool none = k < 5 || k == 30 || k == 31;
+		const double rejected = k == 30 ? 1.01 : k == 31 ? 3.0 : NAN;
+		h.add(k, none ? NAN : 1 + 0.03 * std::sin(k / 4.0), none ? 0 : 100 + k, correction, cum, rejected);
 	}
 	return h;
 }
@@ -54,8 +56,11 @@ TEST(ScalePlot, EachValueIsWhereThePanelsPutIt)
 	// One x axis: frame k is on the same column in both panels.
 	EXPECT_NEAR(areas[0].toPixel(17, 1).x, areas[1].toPixel(17, 0).x, 1e-9);
 
-	const Rgb estimate = *panels[0].series[0].color, cumulative = *panels[0].series[1].color,
-			  correction = *panels[0].series[2].color, inliers = *panels[1].series[0].color;
+	const Rgb rejected = *panels[0].series[0].color, estimate = *panels[0].series[1].color,
+			  cumulative = *panels[0].series[2].color, correction = *panels[0].series[3].color,
+			  inliers = *panels[1].series[0].color;
+	EXPECT_TRUE(test::colorNear(img, areas[0].toPixel(30, 1.01), rejected, 0, 10));
+	EXPECT_LT(areas[0].ymax, 1.2);  // the rejected 3.0 does not squash the rest
 	// The cumulative factor as steps: 1 up to frame 20, 1.04 up to 40, then 1.0088 (between the samples, away from
 	// the estimates' dots).
 	for (auto [x, y] : {std::pair{12.5, 1.0}, {27.5, 1.04}, {52.5, 1.04 * 0.97}})
@@ -69,12 +74,19 @@ TEST(ScalePlot, EachValueIsWhereThePanelsPutIt)
 	for (int k = 6; k < 59; ++k)
 	{
 		const double y = 1 + 0.03 * std::sin(k / 4.0), cum = k < 20 ? 1.0 : k < 40 ? 1.04 : 1.04 * 0.97;
-		if (k == 30 || std::abs(areas[0].toPixel(k, y).y - areas[0].toPixel(k, cum).y) < 6 || k == 20 || k == 40)
+		if (k == 30 || k == 31 || std::abs(areas[0].toPixel(k, y).y - areas[0].toPixel(k, cum).y) < 6 || k == 20 || k == 40)
 			continue;
 		EXPECT_TRUE(test::colorNear(img, areas[0].toPixel(k, y), estimate, 0, 10)) << k;
 		++dots;
 	}
 	EXPECT_GT(dots, 30);
+	// Dots, not a line: nothing of their colour halfway between two of them (18 pixels apart).
+	for (int k : {8, 13, 33, 47})
+	{
+		const double y = 1 + 0.015 * (std::sin(k / 4.0) + std::sin((k + 1) / 4.0));
+		EXPECT_FALSE(test::colorNear(img, areas[0].toPixel(k + 0.5, y), estimate, 2, 60)) << k;
+		EXPECT_FALSE(test::colorNear(img, areas[1].toPixel(k + 0.5, 100.5 + k), inliers, 2, 60)) << k;
+	}
 	// Inliers: 100 + k, and 0 where there was no estimate.
 	for (int k : {10, 25, 45, 55}) EXPECT_TRUE(test::colorNear(img, areas[1].toPixel(k, 100 + k), inliers, 0, 10)) << k;
 	EXPECT_TRUE(test::colorNear(img, areas[1].toPixel(30, 0), inliers, 1, 10));
@@ -97,6 +109,16 @@ TEST(ScalePlot, EveryLegendEntryShowsItsColour)
 			EXPECT_TRUE(test::colorNear(panel, test::legendSwatch(legend, int(i)), *p.series[i].color, 2, 10))
 				<< p.series[i].name;
 	}
+}
+
+TEST(ScalePlot, TheLegendNamesOnlyWhatAppears)
+{
+	ScaleHistory h;
+	for (int k = 0; k < 10; ++k) h.add(k, 1 + 0.01 * k, 50, 1.0, 1.0);  // no rejection, no correction
+	const auto panels = scalePlotPanels(h);
+	ASSERT_EQ(panels[0].series.size(), 2u);
+	EXPECT_TRUE(*panels[0].series[0].color == *scalePlotPanels(history())[0].series[1].color);  // the estimates
+	EXPECT_TRUE(*panels[0].series[1].color == *scalePlotPanels(history())[0].series[2].color);  // the cumulative factor
 }
 
 TEST(ScalePlot, NothingToPlotWritesNothing)

@@ -18,11 +18,11 @@ struct Series
 	std::vector<double> x, y;  ///< same length
 	std::optional<Rgb> color;  ///< default: paletteColor(index)
 	bool markers = false;  ///< a dot at each sample
-	int marker_radius = 3;  ///< in pixels; a larger dot gets an ink outline so that it stands out of smaller ones
 	bool line = true;  ///< samples joined by a line
 	/// Fill the area down to the previous series (to y = 0 for the first) with a light tint of the colour,
 	/// for stacked plots; the previous series must have the same x.
 	bool fill = false;
+	int marker_radius = 3;  ///< in pixels; a larger dot gets an ink outline so that it stands out of smaller ones
 };
 
 struct SeriesStyle

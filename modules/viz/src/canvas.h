@@ -52,8 +52,10 @@ void diamond(cv::Mat& img, cv::Point center, int radius, Rgb fill);
 
 /// Start and end markers of paths given as pixels with their colours, the drive's first: the drive's start is one
 /// neutral ring (every path that starts there shares it); a path that starts elsewhere (a VO that initialised later)
-/// gets a diamond in its colour there. Every end is a square in its path's colour, the first path's on top. Returns whether a diamond was drawn.
-bool startEndMarkers(cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths);
+/// gets a diamond in its colour there. Every end is a square in its path's colour, path `on_top`'s (the main result's)
+/// above the others. Returns whether a diamond was drawn.
+bool startEndMarkers(
+	cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths, std::size_t on_top);
 
 /// Top-left of a box of `size` in the corner of `area` that covers the fewest `pts`, skipping `taken`
 /// (an earlier box). `pad` pixels from the area's edges.

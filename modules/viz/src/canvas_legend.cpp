@@ -55,7 +55,8 @@ void diamond(cv::Mat& img, cv::Point c, int r, Rgb fill)
 	cv::polylines(img, pts, true, kInk, 1, cv::LINE_AA);
 }
 
-bool startEndMarkers(cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths)
+bool startEndMarkers(
+	cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths, std::size_t on_top)
 {
 	const std::vector<cv::Point2d>* first = nullptr;
 	for (const auto& [px, c] : paths)
@@ -63,15 +64,16 @@ bool startEndMarkers(cv::Mat& img, const std::vector<std::pair<std::vector<cv::P
 	if (!first) return false;
 	const cv::Point s = canvas::round(first->front());
 	bool late = false;
-	for (auto it = paths.rbegin(); it != paths.rend(); ++it)  // the first path's end square on top
-	{
-		const auto& [px, c] = *it;
-		if (px.empty()) continue;
-		const cv::Point e = canvas::round(px.back());
+	const auto endSquare = [&](const std::pair<std::vector<cv::Point2d>, Rgb>& path) {
+		if (path.first.empty()) return;
+		const cv::Point e = canvas::round(path.first.back());
 		const cv::Rect sq(e.x - 6, e.y - 6, 13, 13);
-		cv::rectangle(img, sq, canvas::bgr(c), cv::FILLED);
+		cv::rectangle(img, sq, canvas::bgr(path.second), cv::FILLED);
 		cv::rectangle(img, sq, canvas::kInk, 1);
-	}
+	};
+	for (std::size_t i = paths.size(); i-- > 0;)
+		if (i != on_top) endSquare(paths[i]);
+	if (on_top < paths.size()) endSquare(paths[on_top]);
 	for (const auto& [px, c] : paths)
 		if (!px.empty() && cv::norm(px.front() - first->front()) > 4)
 		{

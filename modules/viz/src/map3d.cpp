@@ -127,7 +127,7 @@ cv::Mat drawMap3D(const PointCloud& map, const std::vector<NamedTrajectory>& tra
 		items.push_back({canvas::LegendItem::Line, trajs[i].name, estimates[i].second, style.line_width});
 	paths.insert(paths.end(), estimates.begin(), estimates.end());
 	for (const auto& p : paths) drawn.insert(drawn.end(), p.first.begin(), p.first.end());
-	const bool late = canvas::startEndMarkers(img, paths);
+	const bool late = canvas::startEndMarkers(img, paths, gt ? 1 : 0);  // the main result's end above the others
 	items.push_back({canvas::LegendItem::Ring, "start of the drive", Rgb{40, 40, 40}});
 	if (late) items.push_back({canvas::LegendItem::Diamond, "start of a path that began later", Rgb{200, 200, 200}});
 	items.push_back({canvas::LegendItem::Square, "end", Rgb{200, 200, 200}});

@@ -149,7 +149,7 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 		items.push_back({canvas::LegendItem::Line, label(name, trajs[i].traj), paths[i].second, style.line_width + 1});
 	}
 	markers.insert(markers.end(), paths.begin(), paths.end());
-	const bool late = canvas::startEndMarkers(plot, markers);
+	const bool late = canvas::startEndMarkers(plot, markers, gt ? 1 : 0);  // the main result's end above the others
 	items.push_back({canvas::LegendItem::Ring, "start of the drive", Rgb{40, 40, 40}});
 	if (late) items.push_back({canvas::LegendItem::Diamond, "start of a path that began later", Rgb{200, 200, 200}});
 	items.push_back({canvas::LegendItem::Square, "end", Rgb{200, 200, 200}});

@@ -80,7 +80,8 @@ TEST(Map3D, DrawsMapAndTrajectoryAndWritesPng)
 TEST(Map3D, LongDriveIsFramedWholeWithTheMainResultOnTop)
 {
 	// A 1.2 km drive whose map covers only its last 150 m (a local map): the view still frames every pose. The VO
-	// (second) starts 100 poses late on the same path as the main result (first), which must be drawn above it.
+	// (second) starts 100 poses late on the same path as the main result (first) and the ground truth; the main result
+	// must be drawn above both, its end square too.
 	const Trajectory gt = synth::curvedDrive(1200);
 	ASSERT_GT(gt.size(), 300u);
 	PointCloud map;
@@ -95,8 +96,8 @@ TEST(Map3D, LongDriveIsFramedWholeWithTheMainResultOnTop)
 	const std::vector<NamedTrajectory> trajs{{"VLO", gt, main}, {"VO", Trajectory(gt.begin() + 100, gt.end()), vo}};
 	Map3DStyle style;
 	style.width = 1000, style.height = 700;
-	const cv::Mat img = drawMap3D(map, trajs, nullptr, style);
-	const ViewCamera cam = map3DView(map, trajs, nullptr, style);
+	const cv::Mat img = drawMap3D(map, trajs, &gt, style);
+	const ViewCamera cam = map3DView(map, trajs, &gt, style);
 	const cv::Rect view(0, 0, style.width, style.height - 64);  // above the colour bar's strip
 	for (const auto& p : gt)
 	{
@@ -117,5 +118,5 @@ TEST(Map3D, LongDriveIsFramedWholeWithTheMainResultOnTop)
 	// The legend explains the diamond.
 	const cv::Rect legend = test::findLegend(img);
 	ASSERT_FALSE(legend.empty());
-	EXPECT_EQ(legend.height, 2 * 10 + 24 * 5 - 6);  // VLO, VO, start of the drive, start of a later path, end
+	EXPECT_EQ(legend.height, 2 * 10 + 24 * 6 - 6);  // ground truth, VLO, VO, start of the drive, of a later path, end
 }

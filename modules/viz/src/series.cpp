@@ -27,6 +27,19 @@ void dashedLine(cv::Mat& img, cv::Point a, cv::Point b, cv::Scalar c)
 }
 cv::Scalar tint(Rgb c) { return canvas::bgr({std::uint8_t(c.r / 2 + 128), std::uint8_t(c.g / 2 + 128), std::uint8_t(c.b / 2 + 128)}); }
 
+std::vector<canvas::LegendItem> legendItems(const std::vector<Series>& series)
+{
+	std::vector<canvas::LegendItem> items;
+	if (series.size() == 1 && series[0].name.empty()) return items;  // nothing to tell apart
+	for (size_t k = 0; k < series.size(); ++k)
+	{
+		const auto& s = series[k];
+		items.push_back({s.line ? canvas::LegendItem::Line : canvas::LegendItem::Dot, s.name,
+			s.color.value_or(paletteColor(k)), s.line ? 2 : s.marker_radius + 1});
+	}
+	return items;
+}
+
 /// Fills between series k and k - 1 (or y = 0), sample by sample; non-finite samples leave gaps.
 void fillBelow(cv::Mat& plot, const PlotArea& a, const std::vector<Series>& series, size_t k, cv::Point2d off)
 {
@@ -68,7 +81,8 @@ PlotArea seriesArea(const std::vector<Series>& series, const SeriesStyle& style)
 	const double ypad = std::max(0.05 * (y1 - y0), 1e-6 * std::max(1.0, std::abs(y0)));
 	PlotArea a;
 	const int top = topMargin(style);
-	a.rect = cv::Rect(kLeft, top, style.width - kLeft - kRight, style.height - top - kBottom);
+	const int legendWidth = style.legend_outside ? canvas::legendSize(legendItems(series)).width + 20 : 0;
+	a.rect = cv::Rect(kLeft, top, style.width - kLeft - kRight - legendWidth, style.height - top - kBottom);
 	if (a.rect.width < 100 || a.rect.height < 60) failInput("series plot", "image size too small");
 	a.xmin = style.xmin.value_or(x0), a.xmax = style.xmax.value_or(x1);
 	if (!(a.xmax > a.xmin)) failInput("series plot", "empty x range");
@@ -89,14 +103,13 @@ cv::Mat drawSeries(const std::vector<Series>& series, const SeriesStyle& style)
 			canvas::VAlign::Top, 2);
 	cv::Mat plot = img(a.rect);
 	const cv::Point2d off(-a.rect.x, -a.rect.y);
-	if (style.reference_y)
+	for (size_t k = 0; k < series.size(); ++k)
+		if (series[k].fill) fillBelow(plot, a, series, k, off);
+	if (style.reference_y)  // above the fills (a budget line must show through a stack), below the data
 	{
 		const int y = int(std::lround(a.toPixel(0, *style.reference_y).y + off.y));
 		dashedLine(plot, {0, y}, {a.rect.width, y}, canvas::kInk);
 	}
-	for (size_t k = 0; k < series.size(); ++k)
-		if (series[k].fill) fillBelow(plot, a, series, k, off);
-	std::vector<canvas::LegendItem> items;
 	std::vector<cv::Point2d> all;
 	for (size_t k = 0; k < series.size(); ++k)
 	{
@@ -122,11 +135,12 @@ cv::Mat drawSeries(const std::vector<Series>& series, const SeriesStyle& style)
 			if (s.marker_radius > 3) cv::circle(plot, canvas::round(p + off), s.marker_radius, canvas::kInk, 1, cv::LINE_AA);
 		}
 		flush();
-		items.push_back({s.line ? canvas::LegendItem::Line : canvas::LegendItem::Dot, s.name,
-			s.color.value_or(paletteColor(k)), s.line ? 2 : s.marker_radius + 1});
 	}
-	if (!items.empty() && !(series.size() == 1 && series[0].name.empty()))
-		canvas::legend(img, canvas::emptiestCorner(a.rect, canvas::legendSize(items), all), items);
+	const std::vector<canvas::LegendItem> items = legendItems(series);
+	if (items.empty()) return img;
+	const cv::Point at = style.legend_outside ? cv::Point(a.rect.br().x + 20, a.rect.y)
+											  : canvas::emptiestCorner(a.rect, canvas::legendSize(items), all);
+	canvas::legend(img, at, items);
 	return img;
 }
 

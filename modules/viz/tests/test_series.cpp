@@ -46,6 +46,8 @@ TEST(Series, FillStacksEachSeriesOnThePreviousOneInATintOfItsColour)
 	}
 	SeriesStyle style;
 	style.ymin = 0, style.ymax = 40;
+	style.reference_y = 25;  // a budget line inside b's band
+	style.legend_outside = true;
 	const cv::Mat img = drawSeries({a, b}, style);
 	const PlotArea area = seriesArea({a, b}, style);
 	const auto tint = [](Rgb c) { return Rgb{std::uint8_t(c.r / 2 + 128), std::uint8_t(c.g / 2 + 128), std::uint8_t(c.b / 2 + 128)}; };
@@ -55,6 +57,16 @@ TEST(Series, FillStacksEachSeriesOnThePreviousOneInATintOfItsColour)
 		EXPECT_TRUE(test::colorNear(img, area.toPixel(x, 20), tint(*b.color), 0, 2)) << x;  // 10..30: b
 		EXPECT_TRUE(test::colorNear(img, area.toPixel(x, 37.5), {255, 255, 255}, 0, 2)) << x;  // above (between grid lines)
 	}
+	// The reference line's dashes show above the fill.
+	int dashes = 0;
+	const cv::Point2d ref = area.toPixel(0, 25);
+	for (int x = area.rect.x; x < area.rect.br().x; ++x)
+		dashes += test::colorDistance(img.at<cv::Vec3b>(int(std::lround(ref.y)), x), {40, 40, 40}) < 30;
+	EXPECT_GT(dashes, area.rect.width / 3);
+	// The legend is right of the plot area, not over it.
+	const cv::Rect legend = test::findLegend(img);
+	EXPECT_GE(legend.x, area.rect.br().x);
+	EXPECT_TRUE(test::colorNear(img, test::legendSwatch(legend, 1), *b.color, 1));
 	EXPECT_TRUE(test::colorNear(img, area.toPixel(4.5, 5), tint(*a.color), 0, 2));
 	EXPECT_FALSE(test::colorNear(img, area.toPixel(4.5, 20), tint(*b.color), 3, 20));  // b's gap is not filled
 	// Filling down to a series with other x values cannot be drawn.

@@ -32,6 +32,7 @@ struct SeriesStyle
 	std::optional<double> reference_y;  ///< dashed horizontal line, e.g. 1.0 for a scale factor
 	std::optional<double> ymin, ymax;  ///< fixed y range; default: data range plus 5%
 	std::optional<double> xmin, xmax;  ///< fixed x range; default: data range
+	bool legend_outside = false;  ///< legend right of the plot area (which narrows), not in its emptiest corner
 };
 
 /// One panel of a figure of panels stacked top to bottom over a shared x axis.

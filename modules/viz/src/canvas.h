@@ -62,6 +62,9 @@ bool startEndMarkers(
 cv::Point emptiestCorner(const cv::Rect& area, cv::Size size, const std::vector<cv::Point2d>& pts,
 	const cv::Rect& taken = {}, int pad = 12);
 
+/// Tick step of a colour bar `width` pixels long from vmin to vmax: about five ticks, fewer when their labels
+/// would touch (vmax > vmin).
+double colorBarStep(double vmin, double vmax, int width);
 /// Horizontal colour bar in `bar` from vmin to vmax with ticks below and `label` to the right.
 void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const std::string& label,
 	const std::function<Rgb(double)>& colormap);

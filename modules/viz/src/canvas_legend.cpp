@@ -85,6 +85,16 @@ bool startEndMarkers(
 	return late;
 }
 
+double colorBarStep(double vmin, double vmax, int width)
+{
+	// About five ticks, fewer when their labels (as wide as the widest one, plus a gap) would touch.
+	for (double step = niceStep((vmax - vmin) / 5);; step = niceStep(step * 2.2))
+	{
+		const int label = std::max(textSize(formatTick(vmin, step), kSmall).width, textSize(formatTick(vmax, step), kSmall).width);
+		if ((vmax - vmin) / step <= 1 || width * step / (vmax - vmin) >= label + 12) return step;
+	}
+}
+
 void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const std::string& label,
 	const std::function<Rgb(double)>& colormap)
 {
@@ -95,7 +105,7 @@ void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const
 	}
 	cv::rectangle(img, bar, kInk, 1);
 	if (!(vmax > vmin)) return;
-	const double step = niceStep((vmax - vmin) / 5);
+	const double step = colorBarStep(vmin, vmax, bar.width);
 	for (double v = std::ceil(vmin / step) * step; v <= vmax + 1e-9 * step; v += step)
 	{
 		const int x = bar.x + int(std::lround((v - vmin) / (vmax - vmin) * (bar.width - 1)));

@@ -100,7 +100,9 @@ void writeStageTimePlot(const std::string& png, const FrameTable& table)
 	style.ylabel = "time [ms]";
 	style.ymin = 0;
 	style.reference_y = kBudgetMs;
-	style.ymax = 1.3 * std::max(top, kBudgetMs);  // room above the stack for the legend
+	style.ymax = 1.05 * std::max(top, kBudgetMs);
+	style.legend_outside = true;  // up to a dozen stages: inside, the legend would hide the top of the stack
+	style.width = 1500;  // the plot keeps its width beside the legend
 	renderSeries(stacked, png, style);
 }
 

@@ -6,8 +6,8 @@
 #include <vlo/scale/overlay.h>
 #include <vlo/scale/policy.h>
 #include <vlo/scale/scale_corrector.h>
+#include <vlo/scale/scale_plot.h>
 #include <vlo/viz/projected_scan.h>
-#include <vlo/viz/series.h>
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +39,11 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 	ScaleApplied process(
 		const Frame* prev, const Frame& cur, const MonocularState& vo, const Rescale& rescale, FrameTable& table) override
 	{
-		if (vo.new_map) policy_->reset();  // a fresh map has an arbitrary scale again
+		if (vo.new_map)  // a fresh map has an arbitrary scale again
+		{
+			policy_->reset();
+			cumulative_ = -1;
+		}
 		ScaleApplied applied;
 		if (!vo.camera_motion || !prev || !prev->has_scan || !prev->has_image)
 		{
@@ -59,6 +63,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 			{
 				applied = {d.factor, initial};
 				corrections_ += initial ? 0 : 1;
+				cumulative_ = initial ? 1.0 : cumulative_ * d.factor;
 			}
 			else
 			{
@@ -71,9 +76,8 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		writeColumns(e, decision, applied, table);
 		// Estimates once the map is metric (the initial one says how long a map unit was: off the plot).
 		const bool initial = d.kind == scale::ScaleDecision::Kind::Initial;
-		history_.t.push_back(cur.t);
-		history_.estimate.push_back(e.valid && !initial ? e.scale : std::nan(""));
-		history_.correction.push_back(applied.factor != 1.0 && !applied.initial ? applied.factor : std::nan(""));
+		history_.add(cur.index, e.valid && !initial ? e.scale : std::nan(""), e.counts.inliers,
+			applied.initial ? 1.0 : applied.factor, cumulative_, !e.valid && e.scale > 0 ? e.scale : std::nan(""));
 		if (snapshot_every_ > 0 && cur.index % snapshot_every_ == 0)
 		{
 			Frame copy = *prev;
@@ -85,17 +89,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 
 	void writeSnapshots(const std::string& dir) const override
 	{
-		const auto finite = [](double v) { return std::isfinite(v); };
-		if (std::any_of(history_.estimate.begin(), history_.estimate.end(), finite))
-		{
-			SeriesStyle style;
-			style.title = "scale estimates of the metric VO map (1 = no drift)";
-			style.ylabel = "scale";
-			style.reference_y = 1.0;
-			renderSeries({{"estimate s", history_.t, history_.estimate, std::nullopt, true, false},
-							 {"correction applied", history_.t, history_.correction, std::nullopt, true, false}},
-				dir + "/scale.png", style);
-		}
+		renderScalePlot(history_, dir + "/scale.png");
 		for (const auto& snap : snapshots_.items())
 		{
 			const auto& e = snap.estimate;
@@ -145,10 +139,8 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 	std::unique_ptr<scale::ScaleCorrectionPolicy> policy_;
 	int snapshot_every_ = 0;
 	BoundedSample<ScaleSnapshot> snapshots_{24};  ///< spread over the drive, bounded however long it is
-	struct
-	{
-		std::vector<double> t, estimate, correction;  ///< per frame with an estimate (NaN: none)
-	} history_;
+	scale::ScaleHistory history_;
+	double cumulative_ = -1;  ///< product of the corrections of the current metric map (< 0: not metric yet)
 	int estimates_ = 0, valid_ = 0, corrections_ = 0;
 };
 VLO_REGISTER_MODULE(ScaleCorrectionModule, "lidar_depth", LidarDepthScaleModule);

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vlo::canvas
@@ -49,11 +50,21 @@ void legend(cv::Mat& img, cv::Point topLeft, const std::vector<LegendItem>& item
 /// A filled diamond with an ink outline, e.g. where a trajectory starts later than the drive.
 void diamond(cv::Mat& img, cv::Point center, int radius, Rgb fill);
 
+/// Start and end markers of paths given as pixels with their colours, the drive's first: the drive's start is one
+/// neutral ring (every path that starts there shares it); a path that starts elsewhere (a VO that initialised later)
+/// gets a diamond in its colour there. Every end is a square in its path's colour, path `on_top`'s (the main result's)
+/// above the others. Returns whether a diamond was drawn.
+bool startEndMarkers(
+	cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths, std::size_t on_top);
+
 /// Top-left of a box of `size` in the corner of `area` that covers the fewest `pts`, skipping `taken`
 /// (an earlier box). `pad` pixels from the area's edges.
 cv::Point emptiestCorner(const cv::Rect& area, cv::Size size, const std::vector<cv::Point2d>& pts,
 	const cv::Rect& taken = {}, int pad = 12);
 
+/// Tick step of a colour bar `width` pixels long from vmin to vmax: about five ticks, fewer when their labels
+/// would touch (vmax > vmin).
+double colorBarStep(double vmin, double vmax, int width);
 /// Horizontal colour bar in `bar` from vmin to vmax with ticks below and `label` to the right.
 void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const std::string& label,
 	const std::function<Rgb(double)>& colormap);

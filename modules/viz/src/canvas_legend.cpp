@@ -55,6 +55,46 @@ void diamond(cv::Mat& img, cv::Point c, int r, Rgb fill)
 	cv::polylines(img, pts, true, kInk, 1, cv::LINE_AA);
 }
 
+bool startEndMarkers(
+	cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths, std::size_t on_top)
+{
+	const std::vector<cv::Point2d>* first = nullptr;
+	for (const auto& [px, c] : paths)
+		if (!px.empty() && !first) first = &px;
+	if (!first) return false;
+	const cv::Point s = canvas::round(first->front());
+	bool late = false;
+	const auto endSquare = [&](const std::pair<std::vector<cv::Point2d>, Rgb>& path) {
+		if (path.first.empty()) return;
+		const cv::Point e = canvas::round(path.first.back());
+		const cv::Rect sq(e.x - 6, e.y - 6, 13, 13);
+		cv::rectangle(img, sq, canvas::bgr(path.second), cv::FILLED);
+		cv::rectangle(img, sq, canvas::kInk, 1);
+	};
+	for (std::size_t i = paths.size(); i-- > 0;)
+		if (i != on_top) endSquare(paths[i]);
+	if (on_top < paths.size()) endSquare(paths[on_top]);
+	for (const auto& [px, c] : paths)
+		if (!px.empty() && cv::norm(px.front() - first->front()) > 4)
+		{
+			canvas::diamond(img, canvas::round(px.front()), 9, c);
+			late = true;
+		}
+	cv::circle(img, s, 7, canvas::kWhite, cv::FILLED, cv::LINE_AA);
+	cv::circle(img, s, 7, canvas::kInk, 2, cv::LINE_AA);
+	return late;
+}
+
+double colorBarStep(double vmin, double vmax, int width)
+{
+	// About five ticks, fewer when their labels (as wide as the widest one, plus a gap) would touch.
+	for (double step = niceStep((vmax - vmin) / 5);; step = niceStep(step * 2.2))
+	{
+		const int label = std::max(textSize(formatTick(vmin, step), kSmall).width, textSize(formatTick(vmax, step), kSmall).width);
+		if ((vmax - vmin) / step <= 1 || width * step / (vmax - vmin) >= label + 12) return step;
+	}
+}
+
 void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const std::string& label,
 	const std::function<Rgb(double)>& colormap)
 {
@@ -65,7 +105,7 @@ void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const
 	}
 	cv::rectangle(img, bar, kInk, 1);
 	if (!(vmax > vmin)) return;
-	const double step = niceStep((vmax - vmin) / 5);
+	const double step = colorBarStep(vmin, vmax, bar.width);
 	for (double v = std::ceil(vmin / step) * step; v <= vmax + 1e-9 * step; v += step)
 	{
 		const int x = bar.x + int(std::lround((v - vmin) / (vmax - vmin) * (bar.width - 1)));

@@ -49,21 +49,16 @@ std::vector<Eigen::Vector3d> framingPoints(const PointCloud& map, const std::vec
 	return out;
 }
 
-void drawPath(cv::Mat& img, const ViewCamera& cam, const Trajectory& t, Rgb c, int width,
-	std::vector<cv::Point2d>& drawn)
+/// The path's pixels (poses in front of the camera), drawn with a white halo; markers come later.
+std::vector<cv::Point2d> drawPath(cv::Mat& img, const ViewCamera& cam, const Trajectory& t, Rgb c, int width)
 {
 	std::vector<cv::Point2d> px;
 	for (const auto& p : t)
 		if (auto q = cam.project(p.pose.translation())) px.push_back(*q);
-	if (px.empty()) return;
-	drawn.insert(drawn.end(), px.begin(), px.end());
+	if (px.empty()) return px;
 	canvas::polyline(img, px, canvas::kWhite, width + 2);  // halo: readable over any point colour
 	canvas::polyline(img, px, canvas::bgr(c), width);
-	const cv::Point s = canvas::round(px.front()), e = canvas::round(px.back());
-	cv::circle(img, s, 8, canvas::kWhite, cv::FILLED, cv::LINE_AA);
-	cv::circle(img, s, 8, canvas::kInk, 3, cv::LINE_AA);
-	cv::rectangle(img, cv::Rect(e.x - 7, e.y - 7, 15, 15), canvas::bgr(c), cv::FILLED);
-	cv::rectangle(img, cv::Rect(e.x - 7, e.y - 7, 15, 15), canvas::kInk, 1);
+	return px;
 }
 
 cv::Rect contentRect(const Map3DStyle& style)
@@ -113,16 +108,28 @@ cv::Mat drawMap3D(const PointCloud& map, const std::vector<NamedTrajectory>& tra
 	std::vector<cv::Point2d> drawn;  // pixels with content, to keep the legend off them
 	for (size_t i = 0; i < pts.size(); i += std::max<size_t>(1, pts.size() / 20000))
 		if (auto q = cam.project(pts[i].p.cast<double>())) drawn.push_back(*q);
-	if (gt) drawPath(img, cam, *gt, kGroundTruthColor, style.line_width + 2, drawn);
+	// As in the top-down view: the first trajectory is the main result, drawn last, above the others; the legend
+	// keeps the list order; one start ring for the drive, a diamond where a path began later.
+	std::vector<std::pair<std::vector<cv::Point2d>, Rgb>> paths;
 	std::vector<canvas::LegendItem> items;
-	if (gt) items.push_back({canvas::LegendItem::Line, style.gt_name, kGroundTruthColor, style.line_width + 2});
-	for (size_t i = 0; i < trajs.size(); ++i)
+	if (gt)
+	{
+		paths.push_back({drawPath(img, cam, *gt, kGroundTruthColor, style.line_width + 2), kGroundTruthColor});
+		items.push_back({canvas::LegendItem::Line, style.gt_name, kGroundTruthColor, style.line_width + 2});
+	}
+	std::vector<std::pair<std::vector<cv::Point2d>, Rgb>> estimates(trajs.size());
+	for (size_t i = trajs.size(); i-- > 0;)
 	{
 		const Rgb c = trajs[i].color.value_or(paletteColor(i));
-		drawPath(img, cam, trajs[i].traj, c, style.line_width, drawn);
-		items.push_back({canvas::LegendItem::Line, trajs[i].name, c, style.line_width});
+		estimates[i] = {drawPath(img, cam, trajs[i].traj, c, style.line_width), c};
 	}
-	items.push_back({canvas::LegendItem::Ring, "start", Rgb{40, 40, 40}});
+	for (size_t i = 0; i < trajs.size(); ++i)
+		items.push_back({canvas::LegendItem::Line, trajs[i].name, estimates[i].second, style.line_width});
+	paths.insert(paths.end(), estimates.begin(), estimates.end());
+	for (const auto& p : paths) drawn.insert(drawn.end(), p.first.begin(), p.first.end());
+	const bool late = canvas::startEndMarkers(img, paths, gt ? 1 : 0);  // the main result's end above the others
+	items.push_back({canvas::LegendItem::Ring, "start of the drive", Rgb{40, 40, 40}});
+	if (late) items.push_back({canvas::LegendItem::Diamond, "start of a path that began later", Rgb{200, 200, 200}});
 	items.push_back({canvas::LegendItem::Square, "end", Rgb{200, 200, 200}});
 	canvas::legend(img, canvas::emptiestCorner(content, canvas::legendSize(items), drawn), items);
 

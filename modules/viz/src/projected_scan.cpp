@@ -37,49 +37,79 @@ double autoMaxDepth(std::vector<double> depths)
 	return std::max(step, std::ceil(depths[k] / step) * step);
 }
 
-/// White strip below the image: depth colour bar on the left; on the right the counts (first row)
-/// and the overlay legend (second row).
-void panel(cv::Mat& out, int top, double maxDepth, const ImageOverlay& overlay, const std::string& title,
-	const std::string& detail)
+constexpr int kPanelPad = 16, kTile = 19;
+
+/// The depth colour bar at the left of the panel (none in an image too narrow for it).
+cv::Rect depthBar(int cols, int top) { return {kPanelPad, top + 12, std::min(320, cols / 3), 14}; }
+const std::string kDepthLabel = "LiDAR depth [m]";
+/// Left end of the room right of the colour bar and its label.
+int besideBar(int cols)
 {
-	const cv::Rect bar(16, top + 12, std::min(320, out.cols / 3), 14);
-	int left = bar.x;
-	if (bar.width >= 60)
-	{
-		const std::string label = "LiDAR depth [m]";
-		canvas::colorBar(out, bar, 0, maxDepth, label, turbo);
-		left = bar.x + bar.width + 12 + canvas::textSize(label, canvas::kMedium).width + 30;
-	}
-	// Title and detail beside the colour bar; a long title first drops the detail, then shrinks.
-	const int room = out.cols - 16 - left;
-	const auto fits = [&](const std::string& s, double size) { return canvas::textSize(s, size).width <= room; };
-	const std::string both = title.empty() ? detail : detail.empty() ? title : title + "   " + detail;
-	const std::string info = fits(both, canvas::kMedium) || title.empty() ? both : title;
-	const double size = fits(info, canvas::kMedium) ? canvas::kMedium : canvas::kSmall;
-	canvas::text(out, info, {out.cols - 16, top + 19}, size, canvas::kInk, canvas::HAlign::Right, canvas::VAlign::Middle);
-	// Every legend item: at the normal size right of the colour bar, else smaller, else in a row of its own
-	// below the bar's ticks; only an image too narrow for that drops items (better missing than overlapping).
+	const cv::Rect bar = depthBar(cols, 0);
+	return bar.width >= 60 ? bar.x + bar.width + 12 + canvas::textSize(kDepthLabel, canvas::kMedium).width + 30 : bar.x;
+}
+
+/// Where the overlay legend's items go (centre of each item's tile, relative to the panel's top) and how tall the
+/// panel must be for them: beside the colour bar at the normal size if they fit, else smaller, else in rows of their
+/// own below the bar, as many as they need. No item is dropped.
+struct LegendLayout
+{
+	double size = canvas::kMedium;
+	std::vector<cv::Point> at;
+	int panel_height = kProjectedScanPanel;
+};
+
+LegendLayout layoutLegend(const ImageOverlay& overlay, int cols)
+{
+	LegendLayout l;
 	const auto widthsAt = [&](double size) {
 		std::vector<int> w;
 		for (const auto& item : overlay.legend) w.push_back(26 + canvas::textSize(item.first, size).width + 18);
 		return w;
 	};
-	double legendSize = canvas::kMedium;
-	std::vector<int> widths = widthsAt(legendSize);
+	std::vector<int> widths = widthsAt(l.size);
 	const auto total = [&] { return std::accumulate(widths.begin(), widths.end(), 0); };
-	if (out.cols - 16 - total() < left) widths = widthsAt(legendSize = canvas::kSmall);
-	int y = top + 46, x0 = left;
-	if (out.cols - 16 - total() < left) y = top + 54, x0 = 16;
-	while (!widths.empty() && out.cols - 16 - total() < x0) widths.pop_back();
-	int x = out.cols - 16 - total() + 18;
-	for (size_t k = 0; k < widths.size(); ++k)
+	const int left = besideBar(cols), right = cols - kPanelPad;
+	if (right - total() < left) widths = widthsAt(l.size = canvas::kSmall);
+	if (right - total() >= left)  // one row beside the bar, right-aligned
+	{
+		for (int k = 0, x = right - total() + 18; k < int(widths.size()); x += widths[k++]) l.at.push_back({x + 7, 46});
+		return l;
+	}
+	int x = kPanelPad, y = 62;  // below the bar's tick labels
+	for (int w : widths)
+	{
+		if (x > kPanelPad && x + w - 18 > right) x = kPanelPad, y += 24;
+		l.at.push_back({x + 7, y});
+		x += w;
+	}
+	l.panel_height = std::max(kProjectedScanPanel, y + 16);
+	return l;
+}
+
+/// White strip below the image: depth colour bar on the left; on the right the title and counts (first row)
+/// and the overlay legend (second row, or rows of its own).
+void panel(cv::Mat& out, int top, double maxDepth, const ImageOverlay& overlay, const LegendLayout& layout,
+	const std::string& title, const std::string& detail)
+{
+	const cv::Rect bar = depthBar(out.cols, top);
+	if (bar.width >= 60) canvas::colorBar(out, bar, 0, maxDepth, kDepthLabel, turbo);
+	// Title and detail beside the colour bar; a long title first drops the detail, then shrinks.
+	const int room = out.cols - kPanelPad - besideBar(out.cols);
+	const auto fits = [&](const std::string& s, double size) { return canvas::textSize(s, size).width <= room; };
+	const std::string both = title.empty() ? detail : detail.empty() ? title : title + "   " + detail;
+	const std::string info = fits(both, canvas::kMedium) || title.empty() ? both : title;
+	const double size = fits(info, canvas::kMedium) ? canvas::kMedium : canvas::kSmall;
+	canvas::text(out, info, {out.cols - kPanelPad, top + 19}, size, canvas::kInk, canvas::HAlign::Right,
+		canvas::VAlign::Middle);
+	for (size_t k = 0; k < layout.at.size(); ++k)
 	{
 		const auto& [name, c] = overlay.legend[k];
+		const cv::Point at = layout.at[k] + cv::Point(0, top);
 		// On a grey tile like the image, so that white or black markers show too.
-		cv::rectangle(out, cv::Rect(x - 2, y - 9, 19, 19), cv::Scalar(128, 128, 128), cv::FILLED);
-		cv::circle(out, {x + 7, y}, 6, canvas::bgr(c), 2, cv::LINE_AA);
-		canvas::text(out, name, {x + 24, y}, legendSize, canvas::kInk, canvas::HAlign::Left, canvas::VAlign::Middle);
-		x += widths[k];
+		cv::rectangle(out, cv::Rect(at.x - 9, at.y - 9, kTile, kTile), cv::Scalar(128, 128, 128), cv::FILLED);
+		cv::circle(out, at, 6, canvas::bgr(c), 2, cv::LINE_AA);
+		canvas::text(out, name, {at.x + 17, at.y}, layout.size, canvas::kInk, canvas::HAlign::Left, canvas::VAlign::Middle);
 	}
 }
 }  // namespace
@@ -110,7 +140,8 @@ cv::Mat drawProjectedScan(const mrpt::img::CImage& image, const PointCloud& scan
 		failInput("projected scan", "image is " + std::to_string(img.cols) + "x" + std::to_string(img.rows) +
 				" but the camera intrinsics are for " + std::to_string(rig.camera.width) + "x" +
 				std::to_string(rig.camera.height));
-	cv::Mat out(img.rows + kProjectedScanPanel, img.cols, CV_8UC3, canvas::kWhite);
+	const LegendLayout layout = layoutLegend(overlay, img.cols);
+	cv::Mat out(img.rows + layout.panel_height, img.cols, CV_8UC3, canvas::kWhite);
 	cv::Mat top = out(cv::Rect(0, 0, img.cols, img.rows));
 	img.copyTo(top);
 
@@ -131,7 +162,7 @@ cv::Mat drawProjectedScan(const mrpt::img::CImage& image, const PointCloud& scan
 
 	const std::string detail = style.show_scan ? std::to_string(pts.size()) + " of " + std::to_string(scan.size()) +
 			" LiDAR points in view" : "";
-	panel(out, img.rows, maxDepth, overlay, style.title, detail);
+	panel(out, img.rows, maxDepth, overlay, layout, style.title, detail);
 	return out;
 }
 

@@ -27,6 +27,19 @@ void dashedLine(cv::Mat& img, cv::Point a, cv::Point b, cv::Scalar c)
 }
 cv::Scalar tint(Rgb c) { return canvas::bgr({std::uint8_t(c.r / 2 + 128), std::uint8_t(c.g / 2 + 128), std::uint8_t(c.b / 2 + 128)}); }
 
+std::vector<canvas::LegendItem> legendItems(const std::vector<Series>& series)
+{
+	std::vector<canvas::LegendItem> items;
+	if (series.size() == 1 && series[0].name.empty()) return items;  // nothing to tell apart
+	for (size_t k = 0; k < series.size(); ++k)
+	{
+		const auto& s = series[k];
+		items.push_back({s.line ? canvas::LegendItem::Line : canvas::LegendItem::Dot, s.name,
+			s.color.value_or(paletteColor(k)), s.line ? 2 : s.marker_radius + 1});
+	}
+	return items;
+}
+
 /// Fills between series k and k - 1 (or y = 0), sample by sample; non-finite samples leave gaps.
 void fillBelow(cv::Mat& plot, const PlotArea& a, const std::vector<Series>& series, size_t k, cv::Point2d off)
 {
@@ -68,9 +81,11 @@ PlotArea seriesArea(const std::vector<Series>& series, const SeriesStyle& style)
 	const double ypad = std::max(0.05 * (y1 - y0), 1e-6 * std::max(1.0, std::abs(y0)));
 	PlotArea a;
 	const int top = topMargin(style);
-	a.rect = cv::Rect(kLeft, top, style.width - kLeft - kRight, style.height - top - kBottom);
+	const int legendWidth = style.legend_outside ? canvas::legendSize(legendItems(series)).width + 20 : 0;
+	a.rect = cv::Rect(kLeft, top, style.width - kLeft - kRight - legendWidth, style.height - top - kBottom);
 	if (a.rect.width < 100 || a.rect.height < 60) failInput("series plot", "image size too small");
-	a.xmin = x0, a.xmax = x1;
+	a.xmin = style.xmin.value_or(x0), a.xmax = style.xmax.value_or(x1);
+	if (!(a.xmax > a.xmin)) failInput("series plot", "empty x range");
 	a.ymin = style.ymin.value_or(y0 - ypad), a.ymax = style.ymax.value_or(y1 + ypad);
 	if (!(a.ymax > a.ymin)) failInput("series plot", "empty y range");
 	return a;
@@ -88,14 +103,13 @@ cv::Mat drawSeries(const std::vector<Series>& series, const SeriesStyle& style)
 			canvas::VAlign::Top, 2);
 	cv::Mat plot = img(a.rect);
 	const cv::Point2d off(-a.rect.x, -a.rect.y);
-	if (style.reference_y)
+	for (size_t k = 0; k < series.size(); ++k)
+		if (series[k].fill) fillBelow(plot, a, series, k, off);
+	if (style.reference_y)  // above the fills (a budget line must show through a stack), below the data
 	{
 		const int y = int(std::lround(a.toPixel(0, *style.reference_y).y + off.y));
 		dashedLine(plot, {0, y}, {a.rect.width, y}, canvas::kInk);
 	}
-	for (size_t k = 0; k < series.size(); ++k)
-		if (series[k].fill) fillBelow(plot, a, series, k, off);
-	std::vector<canvas::LegendItem> items;
 	std::vector<cv::Point2d> all;
 	for (size_t k = 0; k < series.size(); ++k)
 	{
@@ -116,19 +130,75 @@ cv::Mat drawSeries(const std::vector<Series>& series, const SeriesStyle& style)
 			const cv::Point2d p = a.toPixel(s.x[i], s.y[i]);
 			all.push_back(p);
 			run.push_back(p + off);
-			if (s.markers) cv::circle(plot, canvas::round(p + off), 3, c, cv::FILLED, cv::LINE_AA);
+			if (!s.markers) continue;
+			cv::circle(plot, canvas::round(p + off), s.marker_radius, c, cv::FILLED, cv::LINE_AA);
+			if (s.marker_radius > 3) cv::circle(plot, canvas::round(p + off), s.marker_radius, canvas::kInk, 1, cv::LINE_AA);
 		}
 		flush();
-		items.push_back({s.line ? canvas::LegendItem::Line : canvas::LegendItem::Dot, s.name,
-			s.color.value_or(paletteColor(k)), s.line ? 2 : 4});
 	}
-	if (!items.empty() && !(series.size() == 1 && series[0].name.empty()))
-		canvas::legend(img, canvas::emptiestCorner(a.rect, canvas::legendSize(items), all), items);
+	const std::vector<canvas::LegendItem> items = legendItems(series);
+	if (items.empty()) return img;
+	const cv::Point at = style.legend_outside ? cv::Point(a.rect.br().x + 20, a.rect.y)
+											  : canvas::emptiestCorner(a.rect, canvas::legendSize(items), all);
+	canvas::legend(img, at, items);
 	return img;
 }
 
 void renderSeries(const std::vector<Series>& series, const std::string& png, const SeriesStyle& style)
 {
 	writePng(png, drawSeries(series, style));
+}
+
+namespace
+{
+/// Each panel's style with the figure's width and shared x range.
+std::vector<SeriesStyle> panelStyles(const std::vector<SeriesPanel>& panels)
+{
+	if (panels.empty()) failInput("series plot", "no panel to draw");
+	double x0 = INFINITY, x1 = -INFINITY;
+	for (const auto& p : panels)
+	{
+		const PlotArea a = seriesArea(p.series, p.style);
+		x0 = std::min(x0, a.xmin), x1 = std::max(x1, a.xmax);
+	}
+	std::vector<SeriesStyle> styles;
+	for (const auto& p : panels)
+	{
+		styles.push_back(p.style);
+		styles.back().width = panels.front().style.width;
+		styles.back().xmin = panels.front().style.xmin.value_or(x0);
+		styles.back().xmax = panels.front().style.xmax.value_or(x1);
+	}
+	return styles;
+}
+}  // namespace
+
+std::vector<PlotArea> seriesPanelAreas(const std::vector<SeriesPanel>& panels)
+{
+	const std::vector<SeriesStyle> styles = panelStyles(panels);
+	std::vector<PlotArea> areas;
+	int top = 0;
+	for (std::size_t k = 0; k < panels.size(); ++k)
+	{
+		areas.push_back(seriesArea(panels[k].series, styles[k]));
+		areas.back().rect.y += top;
+		top += styles[k].height;
+	}
+	return areas;
+}
+
+cv::Mat drawSeriesPanels(const std::vector<SeriesPanel>& panels)
+{
+	const std::vector<SeriesStyle> styles = panelStyles(panels);
+	std::vector<cv::Mat> drawn;
+	for (std::size_t k = 0; k < panels.size(); ++k) drawn.push_back(drawSeries(panels[k].series, styles[k]));
+	cv::Mat img;
+	cv::vconcat(drawn, img);
+	return img;
+}
+
+void renderSeriesPanels(const std::vector<SeriesPanel>& panels, const std::string& png)
+{
+	writePng(png, drawSeriesPanels(panels));
 }
 }  // namespace vlo

@@ -57,36 +57,6 @@ double largestValue(const std::vector<NamedTrajectory>& trajs, const std::vector
 
 Rgb valueColor(double v, double vmax) { return turbo(vmax > 0 ? v / vmax : 0); }
 
-/// The drive's start is one neutral ring (every trajectory that starts there shares it); a trajectory
-/// that starts elsewhere (a VO that initialised later) gets a diamond in its colour there. Every end is
-/// a square in its trajectory's colour. Returns whether a diamond was drawn.
-bool startEndMarkers(cv::Mat& img, const std::vector<std::pair<std::vector<cv::Point2d>, Rgb>>& paths)
-{
-	const std::vector<cv::Point2d>* first = nullptr;
-	for (const auto& [px, c] : paths)
-		if (!px.empty() && !first) first = &px;
-	if (!first) return false;
-	const cv::Point s = canvas::round(first->front());
-	bool late = false;
-	for (const auto& [px, c] : paths)
-	{
-		if (px.empty()) continue;
-		const cv::Point e = canvas::round(px.back());
-		const cv::Rect sq(e.x - 6, e.y - 6, 13, 13);
-		cv::rectangle(img, sq, canvas::bgr(c), cv::FILLED);
-		cv::rectangle(img, sq, canvas::kInk, 1);
-	}
-	for (const auto& [px, c] : paths)
-		if (!px.empty() && cv::norm(px.front() - first->front()) > 4)
-		{
-			canvas::diamond(img, canvas::round(px.front()), 9, c);
-			late = true;
-		}
-	cv::circle(img, s, 7, canvas::kWhite, cv::FILLED, cv::LINE_AA);
-	cv::circle(img, s, 7, canvas::kInk, 2, cv::LINE_AA);
-	return late;
-}
-
 /// Round-length bar in metres, boxed, at `tl`.
 void scaleBar(cv::Mat& img, cv::Point tl, cv::Size box, int barPx, const std::string& label)
 {
@@ -179,7 +149,7 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 		items.push_back({canvas::LegendItem::Line, label(name, trajs[i].traj), paths[i].second, style.line_width + 1});
 	}
 	markers.insert(markers.end(), paths.begin(), paths.end());
-	const bool late = startEndMarkers(plot, markers);
+	const bool late = canvas::startEndMarkers(plot, markers, gt ? 1 : 0);  // the main result's end above the others
 	items.push_back({canvas::LegendItem::Ring, "start of the drive", Rgb{40, 40, 40}});
 	if (late) items.push_back({canvas::LegendItem::Diamond, "start of a path that began later", Rgb{200, 200, 200}});
 	items.push_back({canvas::LegendItem::Square, "end", Rgb{200, 200, 200}});

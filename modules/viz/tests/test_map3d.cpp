@@ -3,7 +3,9 @@
 #include <vlo/viz/map3d.h>
 
 #include "../src/gl_render.h"
+#include "../src/map3d_view.h"
 #include "../src/view_fit.h"
+#include "synthetic.h"
 #include "test_util.h"
 
 #include <opencv2/imgcodecs.hpp>
@@ -73,4 +75,48 @@ TEST(Map3D, DrawsMapAndTrajectoryAndWritesPng)
 		for (int x = 0; x < img.cols; ++x) orange += test::colorDistance(img.at<cv::Vec3b>(y, x), {213, 94, 0}) < 20;
 	EXPECT_GT(orange, 300);  // a thick line across the view
 	EXPECT_THROW(drawMap3D({}, {}, nullptr), InputError);
+}
+
+TEST(Map3D, LongDriveIsFramedWholeWithTheMainResultOnTop)
+{
+	// A 1.2 km drive whose map covers only its last 150 m (a local map): the view still frames every pose. The VO
+	// (second) starts 100 poses late on the same path as the main result (first) and the ground truth; the main result
+	// must be drawn above both, its end square too.
+	const Trajectory gt = synth::curvedDrive(1200);
+	ASSERT_GT(gt.size(), 300u);
+	PointCloud map;
+	for (size_t k = gt.size() - 150; k < gt.size(); ++k)
+		for (double side : {-8.0, 8.0})
+			for (double z : {-1.7, 0.0, 2.0})
+			{
+				const Eigen::Vector3d p = gt[k].pose * Eigen::Vector3d(0, side, z);
+				map.push_back({float(p.x()), float(p.y()), float(p.z()), 0});
+			}
+	const Rgb main{0, 114, 178}, vo{213, 94, 0};
+	const std::vector<NamedTrajectory> trajs{{"VLO", gt, main}, {"VO", Trajectory(gt.begin() + 100, gt.end()), vo}};
+	Map3DStyle style;
+	style.width = 1000, style.height = 700;
+	const cv::Mat img = drawMap3D(map, trajs, &gt, style);
+	const ViewCamera cam = map3DView(map, trajs, &gt, style);
+	const cv::Rect view(0, 0, style.width, style.height - 64);  // above the colour bar's strip
+	for (const auto& p : gt)
+	{
+		const auto q = cam.project(p.pose.translation());
+		ASSERT_TRUE(q);
+		EXPECT_TRUE(view.contains(cv::Point(cvRound(q->x), cvRound(q->y)))) << "pose at t = " << p.t << " is out of the view";
+	}
+	const cv::Point2d start = *cam.project(gt.front().pose.translation()), end = *cam.project(gt.back().pose.translation()),
+					  voStart = *cam.project(gt[100].pose.translation());
+	EXPECT_TRUE(test::colorNear(img, start + cv::Point2d(7, 0), {40, 40, 40}, 1, 10));  // the drive's start ring
+	EXPECT_TRUE(test::colorNear(img, voStart, vo, 1, 10));  // the VO's diamond
+	EXPECT_TRUE(test::colorNear(img, end, main, 1, 10));  // ends: the main result's square drawn last
+	// Between the markers the shared path is the main result's colour, not the VO's.
+	int onTop = 0, checked = 0;
+	for (size_t k = 130; k + 30 < gt.size(); k += 25, ++checked)
+		onTop += test::colorNear(img, *cam.project(gt[k].pose.translation()), main, 0, 10);
+	EXPECT_GT(onTop, 0.9 * checked);
+	// The legend explains the diamond.
+	const cv::Rect legend = test::findLegend(img);
+	ASSERT_FALSE(legend.empty());
+	EXPECT_EQ(legend.height, 2 * 10 + 24 * 6 - 6);  // ground truth, VLO, VO, start of the drive, of a later path, end
 }

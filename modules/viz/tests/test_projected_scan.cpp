@@ -79,3 +79,54 @@ TEST(ProjectedScan, ClearErrorsForInconsistentInput)
 	rig.has_camera = false;
 	EXPECT_THROW(drawProjectedScan(grayImage(640, 480), {}, rig), InputError);
 }
+
+namespace
+{
+/// The overlay legend's rings in reading order: each is on a 19x19 grey tile (128, 128, 128) below the image; the
+/// colour is the ring's right-hand side, 6 pixels right of the tile's centre.
+std::vector<cv::Vec3b> legendRings(const cv::Mat& img, int imageRows)
+{
+	std::vector<cv::Vec3b> rings;
+	const cv::Vec3b tile(128, 128, 128);
+	for (int y = imageRows; y + 18 < img.rows; ++y)
+		for (int x = 0, run = 0; x < img.cols; ++x)
+		{
+			const bool grey = img.at<cv::Vec3b>(y, x) == tile;
+			run = grey ? run + 1 : 0;
+			// A tile's top row: 19 grey pixels in a row with none right above them.
+			if (run == 19 && img.at<cv::Vec3b>(y - 1, x) != tile && (x + 1 == img.cols || img.at<cv::Vec3b>(y, x + 1) != tile))
+				rings.push_back(img.at<cv::Vec3b>(y + 9, x - 9 + 6));
+		}
+	return rings;
+}
+}  // namespace
+
+TEST(ProjectedScan, EveryLegendEntryIsShownWhateverTheImageWidth)
+{
+	// Six long entries, as the scale snapshots have on real data: beside the colour bar they fit only in a wide
+	// image; narrower ones get rows of their own below it, and a taller panel.
+	ImageOverlay ov;
+	const std::vector<Rgb> colours{{0, 158, 115}, {0, 114, 178}, {213, 94, 0}, {204, 121, 167}, {240, 228, 66}, {255, 255, 255}};
+	const char* names[] = {"inlier 251", "RANSAC outlier 104", "off epipolar line 215", "weak gradient 123",
+		"not triangulated 175", "track lost 132"};
+	for (int k = 0; k < 6; ++k) ov.legend.push_back({names[k], colours[k]});
+	for (int w : {2400, 1241, 1226, 640, 320})
+	{
+		SensorRig rig = smallRig();
+		rig.camera.width = w, rig.camera.cx = w / 2.0;
+		const cv::Mat img = drawProjectedScan(grayImage(w, 480), {}, rig, ov);
+		EXPECT_GE(img.rows, 480 + kProjectedScanPanel);
+		const auto rings = legendRings(img, 480);
+		ASSERT_EQ(rings.size(), ov.legend.size()) << "width " << w;
+		for (size_t k = 0; k < rings.size(); ++k)
+			EXPECT_LT(test::colorDistance(rings[k], colours[k]), 40) << "width " << w << ": " << names[k];
+		if (w == 2400)
+		{
+			EXPECT_EQ(img.rows, 480 + kProjectedScanPanel);  // one row beside the colour bar
+		}
+		if (w == 320)
+		{
+			EXPECT_GT(img.rows, 480 + kProjectedScanPanel + 24 * 3);  // a row per entry or so
+		}
+	}
+}

@@ -2,6 +2,7 @@
 #include <vlo/core/error.h>
 #include <vlo/viz/topdown.h>
 
+#include "../src/canvas.h"
 #include "test_util.h"
 
 #include <opencv2/imgcodecs.hpp>
@@ -111,4 +112,13 @@ TEST(TopDown, OneStartRingForTheDriveAndADiamondWhereALaterPathBegins)
 	const auto& p = late.front().pose.translation();
 	EXPECT_TRUE(test::colorNear(img, area.toPixel(p.x(), p.y()), paletteColor(1), 2, 10));  // diamond in vo's colour
 	EXPECT_TRUE(test::colorNear(img, area.toPixel(0, 0), Rgb{255, 255, 255}, 1, 10));  // the ring's white centre
+}
+
+TEST(ColorBar, TickLabelsNeverTouch)
+{
+	// An ATE of up to 34 mm on a 260-pixel bar: five ticks (0.005 m) would need "0.000" ... "0.030" side by side,
+	// wider than 52 pixels each; every 0.01 m they fit. A depth bar 0-40 m keeps its ticks every 10 m.
+	EXPECT_DOUBLE_EQ(canvas::colorBarStep(0, 0.034, 260), 0.01);
+	EXPECT_DOUBLE_EQ(canvas::colorBarStep(0, 40, 320), 10);
+	EXPECT_DOUBLE_EQ(canvas::colorBarStep(0, 1e6, 60), 1e6);  // no room: the ends only
 }

@@ -45,7 +45,8 @@ struct ProjectedScanStyle
 	std::string title;  ///< e.g. "frame 120"; shown in the legend panel
 };
 
-/// Height in pixels of the legend panel that drawProjectedScan adds below the image.
+/// Height in pixels of the legend panel that drawProjectedScan adds below the image, unless the overlay's legend
+/// does not fit beside the colour bar: then it is in rows of its own below it, 24 pixels each, and the panel is taller.
 constexpr int kProjectedScanPanel = 64;
 
 struct ProjectedPoint

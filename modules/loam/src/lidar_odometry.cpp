@@ -180,7 +180,11 @@ LidarOdometryResult LidarOdometry::process(
 			break;
 	}
 	t0 = SteadyClock::now();
-	if (opt_.mapping.enabled) mapper_.insert(f, pose);
+	if (opt_.mapping.enabled)
+	{
+		r.map_carved = mapper_.carve(f, pose);
+		mapper_.insert(f, pose, r.mapping.arrived);
+	}
 	r.map_edge_points = mapper_.edgeMap().numPoints();
 	r.map_plane_points = mapper_.planeMap().numPoints();
 	r.ms.add("mapping", lapMs(t0));

@@ -1,6 +1,7 @@
 #include "vlo/loam/mapping.h"
 
 #include <vlo/loam/features.h>
+#include <vlo/loam/near_points.h>
 #include <vlo/loam/voxel_filter.h>
 
 #include <algorithm>
@@ -116,12 +117,10 @@ void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, Matches
 		}
 }
 
-ScanToMap::Result ScanToMap::align(const Input& in, const Eigen::Isometry3d& guess) const
+bool ScanToMap::refine(const Input& in, Result& res) const
 {
-	Result res;
-	res.T_map_curr = guess;
 	Matches m;
-	Eigen::Isometry3d T = guess;
+	Eigen::Isometry3d T = res.T_map_curr;
 	SolveReport rep;
 	for (int round = 0; round < opt_.solver.outer_iterations; ++round)
 	{
@@ -132,7 +131,7 @@ ScanToMap::Result ScanToMap::align(const Input& in, const Eigen::Isometry3d& gue
 		{
 			res.reason = "too few scan-to-map matches (" + std::to_string(res.n_edges) + " edges, " +
 				std::to_string(res.n_planes) + " planes)";
-			return res;
+			return false;
 		}
 		const Eigen::Isometry3d before = T;
 		rep = solvePose(m, opt_.solver, T);
@@ -143,18 +142,50 @@ ScanToMap::Result ScanToMap::align(const Input& in, const Eigen::Isometry3d& gue
 	res.rms = rep.rms;
 	res.degeneracy = analyseDegeneracy(rep.JtJ, opt_.degeneracy_threshold);
 	res.T_map_curr = T;
-	res.ok = true;
+	return true;
+}
+
+ScanToMap::Input ScanToMap::withoutArrivals(const Input& in, const Eigen::Isometry3d& T, Result& res) const
+{
+	const Eigen::Isometry3f T_last_curr = (T_map_last_.inverse() * T).cast<float>();
+	const Eigen::Isometry3f T_map_curr = T.cast<float>();
+	Input still;
+	const auto keep = [&](const std::vector<Eigen::Vector3f>& pts, std::vector<Eigen::Vector3f>& out) {
+		for (const Eigen::Vector3f& p : pts)
+			if (!last_free_->seenThrough(T_last_curr * p, static_cast<float>(opt_.free_space_beam_radius),
+					static_cast<float>(opt_.free_space_margin), static_cast<float>(opt_.free_space_margin_per_metre)))
+				out.push_back(p);
+			else
+				res.arrived.push_back(T_map_curr * p);
+	};
+	keep(in.edges, still.edges);
+	keep(in.planes, still.planes);
+	return still;
+}
+
+ScanToMap::Result ScanToMap::align(const Input& in, const Eigen::Isometry3d& guess) const
+{
+	Result res;
+	res.T_map_curr = guess;
+	// The guess is good to centimetres: enough to tell points that stand where the previous scan
+	// saw through (a vehicle that drove into that space) from the static scene.
+	if (opt_.drop_arrivals && last_free_)
+		res.ok = refine(withoutArrivals(in, guess, res), res);
+	else
+		res.ok = refine(in, res);
 	return res;
 }
 
-void ScanToMap::insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr)
+void ScanToMap::insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr, const std::vector<Eigen::Vector3f>& arrived)
 {
+	const NearPoints near_arrivals(arrived, static_cast<float>(opt_.arrival_radius));
 	const Eigen::Matrix3f R = T_map_curr.linear().cast<float>();
 	const Eigen::Vector3f t = T_map_curr.translation().cast<float>();
 	const float radius = static_cast<float>(opt_.map_radius);
 	// Edges: centroids at the map's resolution (a third of the points, noise averaged).
 	std::vector<Eigen::Vector3f> w = voxelDownsample(f.less_sharp, static_cast<float>(opt_.map_edge_resolution));
 	for (Eigen::Vector3f& p : w) p = R * p + t;
+	w.erase(std::remove_if(w.begin(), w.end(), [&](const Eigen::Vector3f& p) { return near_arrivals.near(p); }), w.end());
 	edge_map_.insert(w);
 	edge_map_.removeFar(t, radius);
 	// Planes: merged along each ring, so every point keeps its scan line (frame, ring) as a tag.
@@ -172,7 +203,9 @@ void ScanToMap::insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr)
 	std::vector<std::uint32_t> tags;
 	for (const ScanPoint& p : merged)
 	{
-		w.push_back(R * p.p + t);
+		const Eigen::Vector3f q = R * p.p + t;
+		if (near_arrivals.near(q)) continue;
+		w.push_back(q);
 		tags.push_back((scans_inserted_ << 8) | static_cast<std::uint32_t>(p.ring & 0xFF));
 	}
 	plane_map_.insert(w, &tags);
@@ -180,9 +213,27 @@ void ScanToMap::insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr)
 	++scans_inserted_;
 }
 
+std::size_t ScanToMap::carve(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr)
+{
+	if (opt_.free_space_radius <= 0) return 0;
+	FreeSpace free(f.less_flat, f.less_sharp, opt_.free_space_azimuth_bins);
+	const Eigen::Isometry3f T_curr_map = T_map_curr.inverse().cast<float>();
+	const auto gone = [&](const Eigen::Vector3f& p) {
+		return free.seenThrough(T_curr_map * p, static_cast<float>(opt_.free_space_beam_radius),
+			static_cast<float>(opt_.free_space_margin), static_cast<float>(opt_.free_space_margin_per_metre));
+	};
+	const Eigen::Vector3f c = T_map_curr.translation().cast<float>();
+	const float radius = static_cast<float>(opt_.free_space_radius);
+	const std::size_t removed = edge_map_.removeIf(c, radius, gone) + plane_map_.removeIf(c, radius, gone);
+	last_free_ = std::move(free);
+	T_map_last_ = T_map_curr;
+	return removed;
+}
+
 void ScanToMap::clear()
 {
 	edge_map_.clear();
 	plane_map_.clear();
+	last_free_.reset();
 }
 }  // namespace vlo::loam

@@ -116,6 +116,13 @@ void MappingOptions::declare(OptionTable& t)
 	t.add("min_edge_correspondences", min_edge_correspondences, ">= 0", "fewer edge matches: keep the odometry pose (0: edges optional)");
 	t.add("min_plane_correspondences", min_plane_correspondences, ">= 0", "fewer plane matches: keep the odometry pose");
 	t.add("degeneracy_threshold", degeneracy_threshold, ">= 0", "min eigenvalue of J^T J below: degenerate");
+	t.add("free_space_radius", free_space_radius, ">= 0", "map points this close that a beam passes by and returns from beyond are removed (0: off) [m]");
+	t.add("free_space_beam_radius", free_space_beam_radius, "> 0", "... passing within this [m]");
+	t.add("free_space_margin", free_space_margin, ">= 0", "... returning from this much farther [m]");
+	t.add("free_space_margin_per_metre", free_space_margin_per_metre, ">= 0", "... plus this per metre of range");
+	t.add("free_space_azimuth_bins", free_space_azimuth_bins, "[36, 36000]", "azimuth bins of the scan's range image");
+	t.add("drop_arrivals", drop_arrivals, "true | false", "the scan's points in the previous scan's free space are not matched");
+	t.add("arrival_radius", arrival_radius, ">= 0", "... and scan points this close to them stay out of the map [m]");
 }
 
 void MappingOptions::checkRelations() const

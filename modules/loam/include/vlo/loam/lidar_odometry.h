@@ -49,6 +49,7 @@ struct LidarOdometryResult
 	ScanToScanOdometry::Result odometry;  ///< iterations, matches, residual, ok/reason (last pass)
 	ScanToMap::Result mapping;  ///< iterations, matches, residual, degeneracy, ok/reason
 	std::size_t map_edge_points = 0, map_plane_points = 0;
+	std::size_t map_carved = 0;  ///< map points removed as free space this frame
 	/// features (preprocessing and extraction), odometry (deskew and scan-to-scan), mapping (scan-to-map and map update)
 	StageTimes ms{{"features", "odometry", "mapping"}};
 };

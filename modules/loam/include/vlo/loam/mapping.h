@@ -3,12 +3,14 @@
 // points, downsampled, are matched to lines and planes fitted to their nearest map points, the
 // pose is refined from the odometry's guess, and the scan is added to the bounded local map.
 #include <vlo/loam/degeneracy.h>
+#include <vlo/loam/free_space.h>
 #include <vlo/loam/options.h>
 #include <vlo/loam/pose_solver.h>
 #include <vlo/loam/types.h>
 #include <vlo/loam/voxel_map.h>
 
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,7 @@ class ScanToMap
 		int n_edges = 0, n_planes = 0;  ///< matches of the last round
 		double rms = 0;  ///< distance RMS at the solution [m]
 		Degeneracy degeneracy;
+		std::vector<Eigen::Vector3f> arrived;  ///< points in the previous scan's free space, not matched (map frame)
 	};
 
 	explicit ScanToMap(const MappingOptions& o);
@@ -39,8 +42,12 @@ class ScanToMap
 	Input prepare(const FeatureSet& f) const;
 	/// Refines the pose of the scan in the map from `guess`; does not change the map.
 	Result align(const Input& in, const Eigen::Isometry3d& guess) const;
-	/// Adds the scan's less-sharp and less-flat points at pose T_map_curr and drops the far map.
-	void insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr);
+	/// Adds the scan's less-sharp and less-flat points at pose T_map_curr, except those within
+	/// arrival_radius of `arrived` (map frame), and drops the far map.
+	void insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr, const std::vector<Eigen::Vector3f>& arrived = {});
+	/// Removes the map points within free_space_radius that the scan's beams pass by, and keeps
+	/// the scan's free space for the next align(); returns how many points went.
+	std::size_t carve(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr);
 	void clear();
 
 	bool empty() const { return edge_map_.numPoints() == 0 && plane_map_.numPoints() == 0; }
@@ -51,10 +58,18 @@ class ScanToMap
 	void findMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
 
    private:
+	/// Correspondence + solve rounds from res.T_map_curr until converged; false (res.reason set)
+	/// when too few matches.
+	bool refine(const Input& in, Result& res) const;
+	/// `in` without the points that lie, at pose T, in the previous scan's free space: something
+	/// moved there (they go to res.arrived).
+	Input withoutArrivals(const Input& in, const Eigen::Isometry3d& T, Result& res) const;
 	bool fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMatch& out) const;
 
 	MappingOptions opt_;
 	VoxelMap edge_map_, plane_map_;
 	std::uint32_t scans_inserted_ = 0;  ///< scan-line tags: (scan << 8) | ring
+	std::optional<FreeSpace> last_free_;  ///< the last carving scan's free space ...
+	Eigen::Isometry3d T_map_last_ = Eigen::Isometry3d::Identity();  ///< ... and its pose
 };
 }  // namespace vlo::loam

@@ -108,6 +108,16 @@ struct MappingOptions : public OptionSet
 	double plane_line_ratio = 10.0;  ///< not a plane if largest eigenvalue > ratio * middle (a line)
 	int min_edge_correspondences = 0, min_plane_correspondences = 50;  ///< fewer: keep the odometry pose (edges are optional: some scenes have none)
 	double degeneracy_threshold = 10.0;  ///< min eigenvalue of J^T J below: degenerate
+	/// Moving things (doc/LOAM.md "Moving things"), from the free space each scan sees: map points
+	/// within this distance that a beam of the scan passes by and returns from beyond are removed,
+	/// and the next scan's points in that free space are not matched (0: off) [m] ...
+	double free_space_radius = 50.0;
+	double free_space_beam_radius = 0.1;  ///< ... passing within this [m] ...
+	double free_space_margin = 0.5;  ///< ... returning from this much farther [m] ...
+	double free_space_margin_per_metre = 0.1;  ///< ... plus this per metre of range
+	int free_space_azimuth_bins = 900;  ///< azimuth bins of the scan's range image
+	bool drop_arrivals = false;  ///< the scan's points in the previous scan's free space are not matched ...
+	double arrival_radius = 1.0;  ///< ... and its points this close to them stay out of the map [m]
 
    protected:
 	void declare(OptionTable& t) override;

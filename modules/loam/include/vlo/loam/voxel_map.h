@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace vlo::loam
@@ -29,6 +30,8 @@ class VoxelMap
 	/// Drops voxels whose centre is farther than radius from c; returns how many points went.
 	std::size_t removeFar(const Eigen::Vector3f& c, float radius);
 	void clear();
+	/// Drops the points within radius of c for which gone(point) holds; returns how many went.
+	std::size_t removeIf(const Eigen::Vector3f& c, float radius, const std::function<bool(const Eigen::Vector3f&)>& gone);
 
 	std::size_t numPoints() const { return n_points_; }
 	std::size_t numVoxels() const { return index_.size(); }

@@ -1,0 +1,39 @@
+#pragma once
+// Free space seen by a scan: a map point that a beam of the current scan passes by, returning from
+// well beyond it, is no longer there (a vehicle that has moved on leaves such ghosts in the map).
+// The scan is binned by ring and azimuth; each bin keeps its nearest return, so only space that
+// every return of the bin crossed counts as free.
+#include <vlo/loam/types.h>
+
+#include <Eigen/Core>
+
+#include <utility>
+#include <vector>
+
+namespace vlo::loam
+{
+class FreeSpace
+{
+   public:
+	/// `points`: the scan's returns in the sensor frame, with their rings; `n_azimuth_bins` per turn.
+	FreeSpace(const ScanPoints& points, int n_azimuth_bins);
+	FreeSpace(const ScanPoints& a, const ScanPoints& b, int n_azimuth_bins);
+
+	/// True if a return's beam passes within `beam_radius` of q (sensor frame) and came back from
+	/// more than margin + margin_per_metre * |q| beyond it. The range-proportional margin keeps the
+	/// ground: a beam passing a ground point at grazing incidence meets the ground about
+	/// |q| * beam_radius / sensor height farther on.
+	bool seenThrough(const Eigen::Vector3f& q, float beam_radius, float margin, float margin_per_metre) const;
+
+   private:
+	void add(const ScanPoints& points);
+	void finish();
+	int column(const Eigen::Vector3f& p) const;
+
+	int n_cols_;
+	std::vector<float> ring_elevation_;  ///< mean elevation of each ring's returns [rad]
+	std::vector<int> ring_count_;
+	std::vector<std::pair<float, std::size_t>> by_elevation_;  ///< (elevation, ring) of populated rings, ascending
+	std::vector<Eigen::Vector4f> bins_;  ///< (unit direction, range) of the nearest return; range 0: none
+};
+}  // namespace vlo::loam

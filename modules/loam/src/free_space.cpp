@@ -1,0 +1,78 @@
+#include "vlo/loam/free_space.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vlo::loam
+{
+FreeSpace::FreeSpace(const ScanPoints& points, int n_azimuth_bins) : n_cols_(n_azimuth_bins)
+{
+	add(points);
+	finish();
+}
+
+FreeSpace::FreeSpace(const ScanPoints& a, const ScanPoints& b, int n_azimuth_bins) : n_cols_(n_azimuth_bins)
+{
+	add(a);
+	add(b);
+	finish();
+}
+
+int FreeSpace::column(const Eigen::Vector3f& p) const
+{
+	const float u = (std::atan2(p.y(), p.x()) + static_cast<float>(M_PI)) / static_cast<float>(2 * M_PI);
+	return std::min(n_cols_ - 1, std::max(0, static_cast<int>(u * static_cast<float>(n_cols_))));
+}
+
+void FreeSpace::add(const ScanPoints& points)
+{
+	for (const ScanPoint& sp : points)
+	{
+		const float r = sp.p.norm();
+		if (sp.ring < 0 || r <= 0) continue;
+		const std::size_t ring = static_cast<std::size_t>(sp.ring);
+		if (ring >= ring_count_.size())
+		{
+			ring_count_.resize(ring + 1, 0);
+			ring_elevation_.resize(ring + 1, 0.0f);
+			bins_.resize((ring + 1) * static_cast<std::size_t>(n_cols_), Eigen::Vector4f::Zero());
+		}
+		ring_elevation_[ring] += std::asin(sp.p.z() / r);
+		++ring_count_[ring];
+		Eigen::Vector4f& b = bins_[ring * static_cast<std::size_t>(n_cols_) + static_cast<std::size_t>(column(sp.p))];
+		if (b.w() == 0 || r < b.w()) b << sp.p / r, r;
+	}
+}
+
+void FreeSpace::finish()
+{
+	for (std::size_t i = 0; i < ring_count_.size(); ++i)
+		if (ring_count_[i] > 0)
+		{
+			ring_elevation_[i] /= static_cast<float>(ring_count_[i]);
+			by_elevation_.emplace_back(ring_elevation_[i], i);
+		}
+	std::sort(by_elevation_.begin(), by_elevation_.end());
+}
+
+bool FreeSpace::seenThrough(const Eigen::Vector3f& q, float beam_radius, float margin, float margin_per_metre) const
+{
+	const float r = q.norm();
+	if (r <= beam_radius) return false;
+	const float elevation = std::asin(q.z() / r), tolerance = beam_radius / r;
+	const float beyond = r + margin + margin_per_metre * r;
+	// The rings whose elevation is within the tolerance of q's (most points: none).
+	auto it = std::lower_bound(by_elevation_.begin(), by_elevation_.end(), std::make_pair(elevation - tolerance, std::size_t{0}));
+	if (it == by_elevation_.end() || it->first > elevation + tolerance) return false;
+	const std::size_t col = static_cast<std::size_t>(column(q));
+	for (; it != by_elevation_.end() && it->first <= elevation + tolerance; ++it)
+	{
+		const std::size_t ring = it->second;
+		const Eigen::Vector4f& b = bins_[ring * static_cast<std::size_t>(n_cols_) + col];
+		if (b.w() <= beyond) continue;
+		const Eigen::Vector3f d = b.head<3>();
+		if ((q - d * d.dot(q)).norm() < beam_radius) return true;
+	}
+	return false;
+}
+}  // namespace vlo::loam

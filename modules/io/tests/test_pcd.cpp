@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <random>
 
 using namespace vlo;
@@ -60,6 +61,18 @@ void expectError(const std::string& path, const std::string& what)
 	}
 }
 
+pcl::PointCloud<pcl::PointXYZI> toPcl(const PointCloud& cloud)
+{
+	pcl::PointCloud<pcl::PointXYZI> pc;
+	for (const auto& p : cloud)
+	{
+		pcl::PointXYZI q;
+		q.x = p.x, q.y = p.y, q.z = p.z, q.intensity = p.intensity;
+		pc.push_back(q);
+	}
+	return pc;
+}
+
 const std::string kHead = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 1\n";
 }  // namespace
 
@@ -74,6 +87,22 @@ TEST(Pcd, BinaryRoundTripIsExact)
 	EXPECT_LT(size_t(in.tellg()), cloud.size() * 16 + 400);
 }
 
+TEST(Pcd, BinaryIsWhatPclWrites)
+{
+	const auto cloud = randomCloud(70000);  // more than one slice
+	const auto pc = toPcl(cloud);
+	const auto ours = tmpPath("ours.pcd"), pcls = tmpPath("pcl.pcd");
+	writePcd(ours, cloud, PcdFormat::Binary);
+	ASSERT_EQ(pcl::PCDWriter().writeBinary(pcls, pc), 0);
+	auto bytes = [](const std::string& p) {
+		std::ifstream in(p, std::ios::binary);
+		return std::string(std::istreambuf_iterator<char>(in), {});
+	};
+	const std::string a = bytes(ours), b = bytes(pcls);
+	EXPECT_EQ(a.size(), b.size());
+	EXPECT_TRUE(a == b);
+}
+
 TEST(Pcd, AsciiRoundTripIsExact)
 {
 	const auto cloud = randomCloud(500);
@@ -84,13 +113,7 @@ TEST(Pcd, AsciiRoundTripIsExact)
 
 TEST(Pcd, ReadsBinaryCompressed)
 {
-	pcl::PointCloud<pcl::PointXYZI> pc;
-	for (const auto& p : randomCloud(1000))
-	{
-		pcl::PointXYZI q;
-		q.x = p.x, q.y = p.y, q.z = p.z, q.intensity = p.intensity;
-		pc.push_back(q);
-	}
+	const auto pc = toPcl(randomCloud(1000));
 	const auto path = tmpPath("compressed.pcd");
 	ASSERT_EQ(pcl::PCDWriter().writeBinaryCompressed(path, pc), 0);
 	expectSame(randomCloud(1000), readPcd(path));

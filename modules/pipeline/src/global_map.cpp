@@ -28,6 +28,14 @@ void GlobalMap::insert(const PointCloud& scan, const Eigen::Isometry3d& world_T_
 	while (points_.size() > max_points_) coarsen();
 }
 
+PointCloud GlobalMap::takePoints()
+{
+	std::unordered_set<std::uint64_t>().swap(occupied_);
+	PointCloud out = std::move(points_);
+	points_ = PointCloud();
+	return out;
+}
+
 void GlobalMap::coarsen()
 {
 	leaf_ *= 2;

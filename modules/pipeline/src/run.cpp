@@ -114,7 +114,7 @@ RunSummary runPipeline(const RunRequest& req)
 		failInput(req.rawlog, "the visual odometry never initialised in " + std::to_string(outputs.table.rows()) +
 				" frames: no trajectory to write (too few frames, or too little texture or motion)");
 
-	outputs.map = globalMap.points();
+	outputs.map = globalMap.takePoints();
 	prepareOutputDir(req.out);
 	folder.clearPreviousRun();
 	RunSummary summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);

@@ -20,6 +20,20 @@ TEST(GlobalMap, OnePointPerVoxelInWorldFrame)
 	EXPECT_EQ(map.points().size(), 2u);
 }
 
+TEST(GlobalMap, TakePointsHandsTheMapOver)
+{
+	GlobalMap map(0.5, 50.0);
+	PointCloud scan{{0.1f, 0.1f, 0.1f, 1}, {1.1f, 0.1f, 0.1f, 3}};
+	map.insert(scan, Eigen::Isometry3d::Identity());
+	const PointCloud kept = map.points();
+	const PointCloud taken = map.takePoints();
+	ASSERT_EQ(taken.size(), 2u);
+	EXPECT_EQ(taken[1].x, kept[1].x);
+	EXPECT_TRUE(map.points().empty());
+	map.insert(scan, Eigen::Isometry3d::Identity());  // its voxel index went with them: usable again
+	EXPECT_EQ(map.points().size(), 2u);
+}
+
 // A synthetic drive of 50 km: a street of 20 m between walls, scanned every 20 m. The map keeps its budget
 // of points (memory does not grow with the drive's length) by coarsening its voxels, each time by 2.
 TEST(GlobalMap, LongDriveStaysWithinItsBudget)

@@ -28,6 +28,9 @@ MappingStats LocalMapper::process(KeyFrame* kf)
 			nullptr);
 	st.ms.add("ba", lapMs(t));
 	st.culled_keyframes = cullKeyFrames(kf);
+	std::vector<KeyFrame*> in_use = window_.local;  // and the keyframe's covisible ones
+	for (KeyFrame* k : kf->bestCovisibles(-1)) in_use.push_back(k);
+	st.dropped_keyframes = map_.dropOldKeyFrames(static_cast<std::size_t>(opt_.keep_keyframes), in_use);
 	scrub();
 	st.ms.add("other", lapMs(t));
 	stats_ = st;

@@ -55,6 +55,21 @@ std::vector<MapPoint*> Map::points() const
 	return out;
 }
 
+int Map::dropOldKeyFrames(std::size_t keep_newest, const std::vector<KeyFrame*>& in_use)
+{
+	const std::vector<KeyFrame*> live = keyFrames();
+	if (keep_newest == 0 || live.size() <= keep_newest + 1) return 0;
+	int dropped = 0;
+	// live[0] is the origin; live[size - keep_newest ...] are the newest.
+	for (std::size_t i = 1; i < live.size() - keep_newest; ++i)
+		if (std::find(in_use.begin(), in_use.end(), live[i]) == in_use.end())
+		{
+			live[i]->setBad();
+			++dropped;
+		}
+	return dropped;
+}
+
 void Map::collectGarbage()
 {
 	points_.erase(std::remove_if(points_.begin(), points_.end(), [](const auto& p) { return p->bad; }), points_.end());

@@ -90,6 +90,7 @@ void MappingOptions::declare(OptionTable& t)
 	t.add("min_covisibility", min_covisibility, ">= 1", "shared points for a covisibility edge");
 	t.add("redundant_ratio", redundant_ratio, "(0, 1]", "keyframe culled when this fraction of its points ...");
 	t.add("redundant_observers", redundant_observers, ">= 1", "... is seen by this many other keyframes");
+	t.add("keep_keyframes", keep_keyframes, ">= 0", "older keyframes outside the local window dropped (0: none)");
 }
 
 std::vector<std::pair<std::string, OptionSet*>> VoOptions::parts()

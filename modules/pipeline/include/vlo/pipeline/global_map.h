@@ -26,6 +26,9 @@ class GlobalMap
 	/// Adds the scan (LiDAR frame) seen from world_T_lidar; keeps the first point of each voxel.
 	void insert(const PointCloud& scan, const Eigen::Isometry3d& world_T_lidar);
 	const PointCloud& points() const { return points_; }
+	/// Hands the points over and frees the voxel index: the map is done (end of a run). A copy would
+	/// double the memory of the largest structure of a long run just when the outputs need some.
+	PointCloud takePoints();
 	/// The voxel edge now: the one asked for, doubled each time the budget was reached.
 	double leaf() const { return leaf_; }
 

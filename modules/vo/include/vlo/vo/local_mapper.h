@@ -1,7 +1,8 @@
 #pragma once
 // Local mapping after each new keyframe (ORB-SLAM's LocalMapping, run inline): attach the
 // keyframe's points, cull young points that are rarely found, triangulate new points with the
-// covisible keyframes, fuse duplicates, bundle-adjust the local window, cull redundant keyframes.
+// covisible keyframes, fuse duplicates, bundle-adjust the local window, cull redundant keyframes and
+// drop those far behind the window.
 #include <vlo/core/stage_times.h>
 #include <vlo/vo/map.h>
 #include <vlo/vo/matcher.h>
@@ -11,7 +12,7 @@ namespace vlo::vo
 {
 struct MappingStats
 {
-	int new_points = 0, fused = 0, culled_points = 0, culled_keyframes = 0;
+	int new_points = 0, fused = 0, culled_points = 0, culled_keyframes = 0, dropped_keyframes = 0;
 	BundleStats ba;
 	StageTimes ms{{"triangulate", "fuse", "ba", "other"}};
 };

@@ -25,6 +25,12 @@ class Map
 	std::size_t numPoints() const;
 	/// Live points, in creation order.
 	std::vector<MapPoint*> points() const;
+	/// Turns bad the keyframes far behind: all but the newest `keep_newest` live ones, except the map's
+	/// first keyframe (the origin) and those in `in_use`. Their points turn bad when fewer than two keyframes
+	/// still see them. Without loop closing such keyframes are never matched again (ORB-SLAM's local map
+	/// loses them too); keeping them would let the map grow with the drive. keep_newest 0: none dropped.
+	/// Returns how many.
+	int dropOldKeyFrames(std::size_t keep_newest, const std::vector<KeyFrame*>& in_use);
 	/// Frees bad keyframes and points. No one may hold a pointer to them any more.
 	void collectGarbage();
 	/// Scales the map about the world origin (the first keyframe's camera for a fresh map).

@@ -110,6 +110,9 @@ struct MappingOptions : public OptionSet
 	int min_covisibility = 15;  ///< shared points for a covisibility edge
 	double redundant_ratio = 0.9;  ///< keyframe culled when this fraction of its points ...
 	int redundant_observers = 3;  ///< ... is seen by this many other keyframes at the same scale
+	/// The newest this many keyframes stay in the map; older ones that see no point of the local BA window
+	/// are dropped with the points only they saw, so that the map does not grow with the drive (0: all kept).
+	int keep_keyframes = 40;
 
    protected:
 	void declare(OptionTable& t) override;

@@ -6,6 +6,8 @@
 # /usr/bin/time -v and prints one markdown row, then vlo-run's resident memory and CPU time in each tenth of the
 # frame loop (sampled every 5 s into OUT_DIR/run_FRAMES.rss: seconds since the start, RSS kB, CPU seconds):
 # flat once the maps are full. CPU time, unlike the wall times of frames.csv, does not follow the machine's load.
+# LONG_DRIVE_ARGS adds vlo-run options, e.g. "--set pipeline.threads=1": with one thread a frame's ms_total is
+# the wall time of that frame, so the first and last tenths compare (on an idle machine).
 set -euo pipefail
 [[ $# -ge 2 ]] || { echo "usage: $0 BIN_DIR OUT_DIR [FRAMES] [SEED]" >&2; exit 2; }
 bin=$1 out=$2 frames=${3:-5000} seed=${4:-7}
@@ -14,7 +16,7 @@ mkdir -p "$out"
 drive=$out/drive_$frames.rawlog
 [[ -s $drive ]] || "$bin/vlo-sim" --lidar hdl64 --frames "$frames" --seed "$seed" --out "$drive" --quiet
 /usr/bin/time -v -o "$out/run_$frames.time" "$bin/vlo-run" --rawlog "$drive" --ini "$ini" --out "$out/run_$frames" \
-	--overwrite --quiet > "$out/run_$frames.log" &
+	--overwrite --quiet ${LONG_DRIVE_ARGS:-} > "$out/run_$frames.log" &
 timer=$!
 : > "$out/run_$frames.rss"
 started=$SECONDS

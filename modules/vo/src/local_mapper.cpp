@@ -11,7 +11,7 @@ LocalMapper::LocalMapper(Map& map, const PinholeCamera& cam, const ScalePyramid&
 {
 }
 
-MappingStats LocalMapper::process(KeyFrame* kf)
+MappingStats LocalMapper::process(KeyFrame* kf, long due_frame, bool threaded)
 {
 	MappingStats st;
 	auto t = SteadyClock::now();
@@ -24,13 +24,36 @@ MappingStats LocalMapper::process(KeyFrame* kf)
 	st.ms.add("fuse", lapMs(t));
 	window_ = localWindow(kf, opt_.max_ba_keyframes);
 	if (opt_.local_ba)
-		st.ba = bundleAdjust(window_, cam_, pyr_, opt_.ba_iterations, opt_.ba_refine_iterations, topt_.chi2,
-			nullptr);
+	{
+		const BundleSolverSettings s{opt_.ba_iterations, opt_.ba_refine_iterations, topt_.chi2};
+		job_ = std::make_unique<BundleJob>(window_, cam_, pyr_, s, due_frame, threaded);
+		job_kf_ = kf;
+		st.ms.add("ba", lapMs(t));
+	}
+	else
+	{
+		st.culled_keyframes = cullKeyFrames(kf);
+		scrub();
+		st.ms.add("other", lapMs(t));
+	}
+	stats_ = st;
+	return st;
+}
+
+MappingStats LocalMapper::finish()
+{
+	MappingStats st;
+	if (!job_) return st;
+	auto t = SteadyClock::now();
+	st.ba = job_->apply();
+	job_.reset();
 	st.ms.add("ba", lapMs(t));
-	st.culled_keyframes = cullKeyFrames(kf);
+	st.culled_keyframes = cullKeyFrames(job_kf_);
+	job_kf_ = nullptr;
 	scrub();
 	st.ms.add("other", lapMs(t));
-	stats_ = st;
+	stats_.ba = st.ba;
+	stats_.culled_keyframes = st.culled_keyframes;
 	return st;
 }
 

@@ -17,6 +17,9 @@ struct VisualOdometry::Impl
 	VoFrameInfo process(const cv::Mat& gray, double t);
 	bool track(TrackedFrame& cur, VoFrameInfo& info);
 	void insertKeyFrame(TrackedFrame& cur, VoFrameInfo& info);
+	/// Applies the pending local BA of the last keyframe; the last frame's pose follows its reference
+	/// keyframe (as ORB-SLAM's tracking does), so the next motion is measured in the adjusted map.
+	void finishMapping(VoFrameInfo& info);
 	void initialise(TrackedFrame& cur, VoFrameInfo& info);
 	void startMap(InitResult& r, TrackedFrame& cur, VoFrameInfo& info);
 	void lose();
@@ -44,6 +47,7 @@ struct VisualOdometry::Impl
 	SE3 traj_T_map = SE3::Identity();
 	int map_id = -1, reinits = 0;
 	bool metric = false;  ///< the current map's scale was set by setMapScale()
+	bool mapping_thread = false;  ///< local BA on a thread of its own (same results)
 	long frames = 0;
 
 	/// Where the trajectory stood when tracking was lost, to place the next map.

@@ -167,11 +167,7 @@ void VisualOdometry::Impl::insertKeyFrame(TrackedFrame& cur, VoFrameInfo& inf)
 void VisualOdometry::Impl::finishMapping(VoFrameInfo& inf)
 {
 	const auto t0 = SteadyClock::now();
-	KeyFrame* ref = last.has_pose ? last.ref_kf : nullptr;
-	const SE3 ref_before = ref ? ref->Tcw : SE3::Identity();
-	const MappingStats st = mapper->finish();
-	if (ref && !ref->bad) last.Tcw = last.Tcw * ref_before.inverse() * ref->Tcw;
-	addFinished(inf, st);
+	addFinished(inf, mapper->finish());
 	inf.ms.add("mapping", msSince(t0));
 }
 

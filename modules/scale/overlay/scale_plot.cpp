@@ -11,6 +11,11 @@ namespace
 // markers on top; the inliers in their own panel in reddish purple. Rejected estimates in neutral grey, underneath.
 constexpr Rgb kRejected{170, 170, 170}, kEstimate{0, 114, 178}, kCorrection{213, 94, 0}, kCumulative{0, 158, 115}, kInliers{204, 121, 167};
 
+bool anyFinite(const std::vector<double>& v)
+{
+	return std::any_of(v.begin(), v.end(), [](double y) { return std::isfinite(y); });
+}
+
 /// Steps: the value holds until the next sample changes it (a factor applies from its frame on).
 Series steps(const std::string& name, const std::vector<double>& x, const std::vector<double>& y, Rgb c)
 {
@@ -46,7 +51,7 @@ std::vector<SeriesPanel> scalePlotPanels(const ScaleHistory& h)
 	// Only what appears, so that the legend names no category the reader then looks for in vain.
 	for (auto& s : {rejected, estimate, steps("cumulative correction (product so far)", h.frame, h.cumulative, kCumulative),
 			 correction})
-		if (std::any_of(s.y.begin(), s.y.end(), [](double y) { return std::isfinite(y); })) top.series.push_back(s);
+		if (anyFinite(s.y)) top.series.push_back(s);
 	top.style.height = 460;
 	top.style.title = "Scale of the metric VO map per frame (dashed: 1, no drift)";
 	top.style.xlabel = "";
@@ -75,11 +80,7 @@ std::vector<SeriesPanel> scalePlotPanels(const ScaleHistory& h)
 
 bool renderScalePlot(const ScaleHistory& h, const std::string& png)
 {
-	const auto finite = [](double v) { return std::isfinite(v); };
-	if (std::none_of(h.estimate.begin(), h.estimate.end(), finite) &&
-		std::none_of(h.rejected.begin(), h.rejected.end(), finite) &&
-		std::none_of(h.correction.begin(), h.correction.end(), finite))
-		return false;
+	if (!anyFinite(h.estimate) && !anyFinite(h.rejected) && !anyFinite(h.correction)) return false;
 	renderSeriesPanels(scalePlotPanels(h), png);
 	return true;
 }

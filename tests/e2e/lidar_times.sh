@@ -1,13 +1,11 @@
 #!/usr/bin/env bash
 # A rolling LiDAR sweep (vlo-sim --lidar-distortion: each firing at its own time, written with its ring
 # and time): with the sensor's times LOAM deskews every point to the image's instant, so the drive's
-# frame-to-frame error stays near the same drive's without distortion (modes lo and vlo), and both it and
-# the KITTI t_err are below what they are when the times are ignored (loam.scan.point_times = false).
-# Bounds: frame-to-frame 1.3x undistorted in both modes, t_err 1.3x in mode lo. Mode vlo's t_err on 40
-# frames follows the VO's scatter more than the sweep: on seeds 1-4 its ratio to the undistorted drive was
-# 1.37 0.90 1.04 1.52 (seed 1: 0.0640 against 0.0469 %), while ignoring the times gave 0.22 0.10 0.07 0.14 %
-# against 0.064 0.090 0.043 0.066 % with them; so vlo's t_err is checked against ignoring the times
-# (doc/RESULTS.md "A rolling LiDAR sweep").
+# frame-to-frame error and its KITTI t_err stay near the same drive's without distortion (modes lo and
+# vlo), and below what they are when the times are ignored (loam.scan.point_times = false). The bound
+# here is 1.3x for both (measured on these 40 frames: t_err lo -1 %, vlo +13 %; frame-to-frame lo +12 %,
+# vlo -3 %); t_err was 1.7-1.8x on 100 frames before the scan-to-scan search used the ring ids by
+# elevation (doc/RESULTS.md "A rolling LiDAR sweep").
 set -u
 BIN="${VLO_BIN:?}"
 INI="${VLO_SRC:?}/ini"
@@ -33,13 +31,12 @@ rpe() {
 for mode in lo vlo; do
 	read -r plain plain_t <<< "$(rpe "plain_$mode" plain.rawlog $mode)"
 	read -r timed timed_t <<< "$(rpe "dist_$mode" dist.rawlog $mode)"
-	read -r ignored ignored_t <<< "$(rpe "dist_${mode}_no_times" dist.rawlog $mode --set loam.scan.point_times=false)"
-	echo "$mode: frame-to-frame RMS $plain m, t_err $plain_t % undistorted; $timed m, $timed_t % rolling sweep with point times; $ignored m, $ignored_t % with the times ignored"
+	echo "$mode: frame-to-frame RMS $plain m, t_err $plain_t % undistorted; $timed m, $timed_t % rolling sweep with point times"
 	below "$timed" "$(awk -v p="$plain" 'BEGIN { print 1.3 * p }')" || fail "$mode: $timed m above 1.3 x $plain m"
-	if [ $mode = lo ]; then
-		below "$timed_t" "$(awk -v p="$plain_t" 'BEGIN { print 1.3 * p }')" || fail "$mode: t_err $timed_t % above 1.3 x $plain_t %"
-	fi
-	below "$timed" "$ignored" || fail "$mode: point times do not beat ignoring them"
-	below "$timed_t" "$ignored_t" || fail "$mode: point times do not beat ignoring them (t_err)"
+	below "$timed_t" "$(awk -v p="$plain_t" 'BEGIN { print 1.3 * p }')" || fail "$mode: t_err $timed_t % above 1.3 x $plain_t %"
 done
+read -r ignored ignored_t <<< "$(rpe dist_lo_no_times dist.rawlog lo --set loam.scan.point_times=false)"
+echo "lo: $ignored m, t_err $ignored_t % with the point times ignored"
+below "$(jv dist_lo.json rpe_t_rmse_m)" "$ignored" || fail "point times do not beat ignoring them"
+below "$(jv dist_lo_k.json kitti_t_err_pct)" "$ignored_t" || fail "point times do not beat ignoring them (t_err)"
 finish lidar_times

@@ -32,8 +32,15 @@ pose_yaw = 0
 pose_pitch = 0
 pose_roll = 0
 INI
-	# rawlog-grabber quits when its standard input ends: keep it open while the capture is read.
-	sleep 4 | rawlog-grabber "grab_$1.ini" > "grab_$1.log" 2>&1
+	# rawlog-grabber quits when its standard input ends: keep it open while the capture is read, for 4 s
+	# from the moment it runs (on a loaded machine loading MRPT can take longer than that by itself).
+	{
+		for _ in $(seq 600); do
+			grep -q "Press any key" "grab_$1.log" 2> /dev/null && break
+			sleep 0.1
+		done
+		sleep 4
+	} | rawlog-grabber "grab_$1.ini" > "grab_$1.log" 2>&1
 	ls grab_"$1"/*.rawlog > /dev/null 2>&1 || fail "$1: rawlog-grabber wrote nothing: $(tail -3 "grab_$1.log")"
 }
 

@@ -5,6 +5,7 @@
 #include <vlo/io/rawlog_writer.h>
 
 #include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <cstdio>
@@ -25,19 +26,36 @@ struct RawlogWriter::Impl
 	std::string path, partial, images_dir, images_partial;
 	bool external = true, committed = false;
 	std::size_t written = 0;
-	mrpt::io::CFileGZOutputStream out;
+	mrpt::io::CFileGZOutputStream gz;
+	mrpt::io::CFileOutputStream plain;
+	bool compressed = true;
 	mrpt::serialization::CArchive::UniquePtr ar;
 
+	void close()
+	{
+		if (compressed)
+			gz.close();
+		else
+			plain.close();
+	}
 	void discard() noexcept
 	{
 		std::error_code ec;
-		out.close();
+		close();
 		fs::remove(partial, ec);
 		if (external) fs::remove_all(images_partial, ec);
 	}
 };
 
-RawlogWriter::RawlogWriter(const std::string& path, bool external_images) : impl_(std::make_unique<Impl>())
+RawlogCompression parseRawlogCompression(const std::string& name, const std::string& what)
+{
+	if (name == "gzip") return RawlogCompression::Gzip;
+	if (name == "none") return RawlogCompression::None;
+	failInput(what, "'" + name + "' is not a rawlog compression (gzip | none)");
+}
+
+RawlogWriter::RawlogWriter(const std::string& path, bool external_images, RawlogCompression compression)
+	: impl_(std::make_unique<Impl>())
 {
 	auto& d = *impl_;
 	d.path = path;
@@ -49,9 +67,14 @@ RawlogWriter::RawlogWriter(const std::string& path, bool external_images) : impl
 	if (fs::is_directory(path, ec)) failInput(path, "is a directory, expected a rawlog file name");
 	const fs::path parent = fs::path(path).parent_path();
 	if (!parent.empty()) fs::create_directories(parent, ec);
-	if (!d.out.open(d.partial, 1 /*fast gzip: point clouds barely compress*/))
-		failInput(path, "cannot open for writing");
-	d.ar = mrpt::serialization::archiveUniquePtrFrom(d.out);
+	d.compressed = compression == RawlogCompression::Gzip;
+	const bool opened = d.compressed ? d.gz.open(d.partial, 1 /*fast gzip: point clouds barely compress*/)
+									 : d.plain.open(d.partial);
+	if (!opened) failInput(path, "cannot open for writing");
+	if (d.compressed)
+		d.ar = mrpt::serialization::archiveUniquePtrFrom(d.gz);
+	else
+		d.ar = mrpt::serialization::archiveUniquePtrFrom(d.plain);
 	if (d.external)
 	{
 		fs::remove_all(d.images_partial, ec);
@@ -104,7 +127,7 @@ void RawlogWriter::writeFrame(const Frame& frame, const std::string& camera_labe
 void RawlogWriter::commit()
 {
 	auto& d = *impl_;
-	d.out.close();
+	d.close();
 	std::error_code ec;
 	if (d.external)
 	{

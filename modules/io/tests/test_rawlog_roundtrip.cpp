@@ -188,3 +188,32 @@ TEST(RawlogWriter, CreatesTheOutputFolderAndReplacesOldImages)
 	EXPECT_FALSE(fs::exists(dir + "/sub/a_Images/stale.png"));
 	EXPECT_EQ(w.observationsWritten(), 2u);
 }
+
+TEST(RawlogWriter, PlainRawlogReadsAsTheGzipOne)
+{
+	const std::string dir = freshDir("_plain");
+	const std::string names[] = {dir + "/gz.rawlog", dir + "/plain.rawlog"};
+	const RawlogCompression kinds[] = {RawlogCompression::Gzip, RawlogCompression::None};
+	for (int i = 0; i < 2; ++i)
+	{
+		RawlogWriter w(names[i], false, kinds[i]);
+		for (std::size_t k = 0; k < 3; ++k) w.writeFrame(testFrame(k, 0.1 * static_cast<double>(k)));
+		w.commit();
+	}
+	unsigned char magic[2][2] = {};
+	for (int i = 0; i < 2; ++i) std::ifstream(names[i], std::ios::binary).read(reinterpret_cast<char*>(magic[i]), 2);
+	EXPECT_TRUE(magic[0][0] == 0x1f && magic[0][1] == 0x8b);  // gzip
+	EXPECT_FALSE(magic[1][0] == 0x1f && magic[1][1] == 0x8b);
+	const auto gz = readFrames(names[0]), plain = readFrames(names[1]);
+	ASSERT_EQ(plain.size(), 3u);
+	ASSERT_EQ(gz.size(), plain.size());
+	for (std::size_t k = 0; k < gz.size(); ++k)
+	{
+		EXPECT_EQ(plain[k].t, gz[k].t);
+		expectSameImage(gz[k].image, plain[k].image);
+		ASSERT_EQ(plain[k].scan.size(), gz[k].scan.size());
+		for (std::size_t p = 0; p < gz[k].scan.size(); ++p) EXPECT_EQ(plain[k].scan[p].z, gz[k].scan[p].z);
+	}
+	EXPECT_EQ(parseRawlogCompression("none", "--x"), RawlogCompression::None);
+	EXPECT_THROW(parseRawlogCompression("zstd", "--x"), InputError);
+}

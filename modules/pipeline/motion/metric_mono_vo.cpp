@@ -25,6 +25,7 @@ class MetricMonoVo : public MotionSource
 		if (!vo_) failInput(where, "'" + setup.visual_odometry + "' is not a monocular VO, which motion_source = metric_mono needs (a metric VO: motion_source = visual)");
 		vo.release();
 		vo_->configure(config);
+		vo_->useThreads(setup.threads);
 		scale_ = registry<ScaleCorrectionModule>().create(
 			setup.scale_correction, config.where("pipeline", "scale_correction"));
 		scale_->configure(config, setup.snapshot_every);

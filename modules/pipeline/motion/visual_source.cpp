@@ -15,6 +15,7 @@ class VisualSource : public MotionSource
 	{
 		vo_ = registry<VisualOdometryModule>().create(setup.visual_odometry, config.where("pipeline", "visual_odometry"));
 		vo_->configure(config);
+		vo_->useThreads(setup.threads);
 	}
 
 	std::optional<Eigen::Isometry3d> process(const Frame& frame, FrameTable& table) override

@@ -26,6 +26,7 @@ class OrbVoModule : public MonocularVisualOdometry
 			if (!frame.rig.has_camera || !frame.rig.camera.valid())
 				failInput(where, "no valid camera intrinsics in the rawlog for the visual odometry");
 			vo_ = std::make_unique<vo::VisualOdometry>(frame.rig.camera, opt_);
+			vo_->useMappingThread(threads_ >= 2);
 			vehicle_T_camera_ = frame.rig.vehicle_T_camera;
 		}
 		cv::Mat gray = frame.image.asCvMatRef();
@@ -57,6 +58,8 @@ class OrbVoModule : public MonocularVisualOdometry
 		return step;
 	}
 
+	void useThreads(int threads) override { threads_ = threads; }
+
 	MonocularState monocular() const override { return mono_; }
 
 	bool rescale(double factor, bool whole_map) override
@@ -70,6 +73,7 @@ class OrbVoModule : public MonocularVisualOdometry
 	std::unique_ptr<vo::VisualOdometry> vo_;
 	Eigen::Isometry3d vehicle_T_camera_ = Eigen::Isometry3d::Identity();
 	MonocularState mono_;
+	int threads_ = 1;
 };
 VLO_REGISTER_MODULE(VisualOdometryModule, "orb", OrbVoModule);
 }  // namespace

@@ -1,50 +1,61 @@
 // Bundle adjustment of a keyframe window in the frame of its earliest keyframe (paper III-C).
-#include <vlo/vo/optimizer.h>
+#include <vlo/vo/bundle_problem.h>
 
-#include <array>
 #include <unordered_map>
 
 #include "reprojection_error.h"
 
 namespace vlo::vo
 {
-namespace
+BundleProblem snapshotBundle(const BundleWindow& w, const PinholeCamera& cam, const ScalePyramid& pyr, const KeyFrame* gauge)
 {
-struct Obs
-{
-	KeyFrame* kf;
-	std::size_t point;  ///< index into the window's points
-	int idx;  ///< keypoint in kf
-};
-}  // namespace
-
-BundleStats bundleAdjust(const BundleWindow& w, const PinholeCamera& cam, const ScalePyramid& pyr, int iterations,
-	int refine_iterations, double chi2, const KeyFrame* gauge)
-{
-	BundleStats st;
-	if (w.local.empty() || !w.anchor) return st;
+	BundleProblem p;
+	p.cam = cam;
+	if (w.local.empty() || !w.anchor) return p;
 	// Everything is written relative to the anchor: it sits at the origin with unit rotation, so the
 	// numbers optimised are small wherever the window lies in the world.
-	const SE3 Ta = w.anchor->Tcw, Ta_inv = Ta.inverse();
-	std::unordered_map<const KeyFrame*, std::array<double, 6>> poses;
+	const SE3 Ta = w.anchor->Tcw;
+	std::unordered_map<const KeyFrame*, std::size_t> pose_of;
 	for (auto* group : {&w.local, &w.fixed})
-		for (KeyFrame* kf : *group) detail::toParams(kf->Tcw * Ta_inv, poses[kf].data());
-	std::vector<std::array<double, 3>> pts(w.points.size());
-	std::vector<Obs> obs;
+		for (KeyFrame* kf : *group)
+		{
+			pose_of[kf] = p.poses.size();
+			p.poses.emplace_back();
+			detail::toParams(kf->Tcw * Ta.inverse(), p.poses.back().data());
+		}
+	p.n_local = w.local.size();
+	const KeyFrame* g = gauge ? gauge : w.anchor;
+	if (pose_of.count(g)) p.gauge = pose_of[g];
+	p.gauge_always = gauge != nullptr;
+	p.points.resize(w.points.size());
 	for (std::size_t i = 0; i < w.points.size(); ++i)
 	{
 		const Vec3 X = Ta * w.points[i]->pos;
-		pts[i] = {X.x(), X.y(), X.z()};
+		p.points[i] = {X.x(), X.y(), X.z()};
 		for (const auto& o : w.points[i]->observations())
-			if (poses.count(o.kf)) obs.push_back({o.kf, i, o.idx});
+		{
+			const auto it = pose_of.find(o.kf);
+			if (it == pose_of.end()) continue;
+			const cv::KeyPoint& k = o.kf->key(o.idx);
+			const auto level = static_cast<std::size_t>(k.octave);
+			p.obs.push_back({it->second, i, o.idx, Vec2(k.pt.x, k.pt.y), pyr.inv_scale[level], pyr.inv_sigma2[level]});
+		}
 	}
-	if (obs.empty()) return st;
+	p.stats.keyframes = static_cast<int>(w.local.size());
+	p.stats.fixed = static_cast<int>(w.fixed.size());
+	p.stats.points = static_cast<int>(w.points.size());
+	p.stats.observations = static_cast<int>(p.obs.size());
+	return p;
+}
 
-	auto isOutlier = [&](const Obs& o) {
-		const Vec3 Xc = detail::fromParams(poses[o.kf].data()) * Vec3(pts[o.point][0], pts[o.point][1], pts[o.point][2]);
+void solveBundle(BundleProblem& p, int iterations, int refine_iterations, double chi2)
+{
+	if (p.obs.empty()) return;
+	auto isOutlier = [&](const BundleProblem::Obs& o) {
+		const auto& X = p.points[o.point];
+		const Vec3 Xc = detail::fromParams(p.poses[o.pose].data()) * Vec3(X[0], X[1], X[2]);
 		if (Xc.z() <= 0) return true;
-		const cv::KeyPoint& k = o.kf->key(o.idx);
-		return (project(cam, Xc) - Vec2(k.pt.x, k.pt.y)).squaredNorm() * pyr.inv_sigma2[static_cast<std::size_t>(k.octave)] > chi2;
+		return (project(p.cam, Xc) - o.px).squaredNorm() * o.inv_sigma2 > chi2;
 	};
 	ceres::HuberLoss huber(std::sqrt(chi2));
 	// One pass: robust over every observation, or plain squares over the current inliers.
@@ -52,47 +63,65 @@ BundleStats bundleAdjust(const BundleWindow& w, const PinholeCamera& cam, const 
 		ceres::Problem::Options po;
 		po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
 		ceres::Problem problem(po);
-		for (const auto& o : obs)
+		for (const auto& o : p.obs)
 		{
 			if (!robust && isOutlier(o)) continue;
-			const cv::KeyPoint& k = o.kf->key(o.idx);
-			problem.AddResidualBlock(detail::ReprojectionError::create(Vec2(k.pt.x, k.pt.y),
-										 pyr.inv_scale[static_cast<std::size_t>(k.octave)], cam),
-				robust ? &huber : nullptr, poses[o.kf].data(), pts[o.point].data());
+			problem.AddResidualBlock(detail::ReprojectionError::create(o.px, o.inv_scale, p.cam), robust ? &huber : nullptr,
+				p.poses[o.pose].data(), p.points[o.point].data());
 		}
 		if (problem.NumResidualBlocks() == 0) return;
 		int held = 0;
-		for (KeyFrame* kf : w.fixed)
-			if (problem.HasParameterBlock(poses[kf].data())) problem.SetParameterBlockConstant(poses[kf].data()), ++held;
+		for (std::size_t i = p.n_local; i < p.poses.size(); ++i)
+			if (problem.HasParameterBlock(p.poses[i].data())) problem.SetParameterBlockConstant(p.poses[i].data()), ++held;
 		// Monocular gauge: without fixed keyframes, hold one (7th dof, scale, is left to damping).
-		const KeyFrame* g = gauge ? gauge : (held == 0 ? w.anchor : nullptr);
-		if (g && poses.count(g) && problem.HasParameterBlock(poses[g].data())) problem.SetParameterBlockConstant(poses[g].data());
+		if (p.gauge != p.npos && (p.gauge_always || held == 0) && problem.HasParameterBlock(p.poses[p.gauge].data()))
+			problem.SetParameterBlockConstant(p.poses[p.gauge].data());
 		ceres::Solver::Summary summary;
 		ceres::Solve(detail::solverOptions(its, true), &problem, &summary);
-		if (robust) st.initial_cost = summary.initial_cost;
-		st.final_cost = summary.final_cost;
+		if (robust) p.stats.initial_cost = summary.initial_cost;
+		p.stats.final_cost = summary.final_cost;
 	};
 	if (iterations > 0) solve(iterations, true);
 	if (refine_iterations > 0) solve(refine_iterations, false);
+	for (auto& o : p.obs) o.outlier = isOutlier(o);
+}
 
-	for (const auto& o : obs)
+BundleStats applyBundle(const BundleWindow& w, const BundleProblem& p, double scale)
+{
+	if (p.obs.empty()) return {};
+	BundleStats st = p.stats;
+	const std::vector<KeyFrame*>* groups[] = {&w.local, &w.fixed};
+	std::vector<KeyFrame*> kfs;
+	for (const auto* g : groups) kfs.insert(kfs.end(), g->begin(), g->end());
+	for (const auto& o : p.obs)
 	{
 		MapPoint* mp = w.points[o.point];
-		if (isOutlier(o) && !mp->bad && mp->indexIn(o.kf) == o.idx)
+		KeyFrame* kf = kfs[o.pose];
+		if (o.outlier && !mp->bad && mp->indexIn(kf) == o.idx)
 		{
-			o.kf->points[static_cast<std::size_t>(o.idx)] = nullptr;
-			mp->eraseObservation(o.kf);
+			kf->points[static_cast<std::size_t>(o.idx)] = nullptr;
+			mp->eraseObservation(kf);
 			++st.outliers;
 		}
 	}
-	for (KeyFrame* kf : w.local) kf->Tcw = detail::fromParams(poses[kf].data()) * Ta;
+	const SE3 Ta = w.anchor->Tcw, Ta_inv = Ta.inverse();
+	for (std::size_t i = 0; i < p.n_local; ++i)
+	{
+		SE3 T = detail::fromParams(p.poses[i].data());
+		T.translation() *= scale;
+		kfs[i]->Tcw = T * Ta;
+	}
 	for (std::size_t i = 0; i < w.points.size(); ++i)
-		if (!w.points[i]->bad) w.points[i]->pos = Ta_inv * Vec3(pts[i][0], pts[i][1], pts[i][2]);
-	st.keyframes = static_cast<int>(w.local.size());
-	st.fixed = static_cast<int>(w.fixed.size());
-	st.points = static_cast<int>(w.points.size());
-	st.observations = static_cast<int>(obs.size());
+		if (!w.points[i]->bad) w.points[i]->pos = Ta_inv * (scale * Vec3(p.points[i][0], p.points[i][1], p.points[i][2]));
 	return st;
+}
+
+BundleStats bundleAdjust(const BundleWindow& w, const PinholeCamera& cam, const ScalePyramid& pyr, int iterations,
+	int refine_iterations, double chi2, const KeyFrame* gauge)
+{
+	BundleProblem p = snapshotBundle(w, cam, pyr, gauge);
+	solveBundle(p, iterations, refine_iterations, chi2);
+	return applyBundle(w, p);
 }
 
 BundleWindow localWindow(KeyFrame* kf, int max_keyframes)

@@ -11,7 +11,7 @@ LocalMapper::LocalMapper(Map& map, const PinholeCamera& cam, const ScalePyramid&
 {
 }
 
-MappingStats LocalMapper::process(KeyFrame* kf)
+MappingStats LocalMapper::process(KeyFrame* kf, long due_frame, bool threaded)
 {
 	MappingStats st;
 	auto t = SteadyClock::now();
@@ -24,17 +24,45 @@ MappingStats LocalMapper::process(KeyFrame* kf)
 	st.ms.add("fuse", lapMs(t));
 	window_ = localWindow(kf, opt_.max_ba_keyframes);
 	if (opt_.local_ba)
-		st.ba = bundleAdjust(window_, cam_, pyr_, opt_.ba_iterations, opt_.ba_refine_iterations, topt_.chi2,
-			nullptr);
+	{
+		const BundleSolverSettings s{opt_.ba_iterations, opt_.ba_refine_iterations, topt_.chi2};
+		job_ = std::make_unique<BundleJob>(window_, cam_, pyr_, s, due_frame, threaded);
+		job_kf_ = kf;
+		st.ms.add("ba", lapMs(t));
+	}
+	else
+	{
+		cullAround(kf, st);
+		st.ms.add("other", lapMs(t));
+	}
+	stats_ = st;
+	return st;
+}
+
+MappingStats LocalMapper::finish()
+{
+	MappingStats st;
+	if (!job_) return st;
+	auto t = SteadyClock::now();
+	st.ba = job_->apply();
+	job_.reset();
 	st.ms.add("ba", lapMs(t));
+	cullAround(job_kf_, st);
+	job_kf_ = nullptr;
+	st.ms.add("other", lapMs(t));
+	stats_.ba = st.ba;
+	stats_.culled_keyframes = st.culled_keyframes;
+	stats_.dropped_keyframes = st.dropped_keyframes;
+	return st;
+}
+
+void LocalMapper::cullAround(KeyFrame* kf, MappingStats& st)
+{
 	st.culled_keyframes = cullKeyFrames(kf);
 	std::vector<KeyFrame*> in_use = window_.local;  // and the keyframe's covisible ones
 	for (KeyFrame* k : kf->bestCovisibles(-1)) in_use.push_back(k);
 	st.dropped_keyframes = map_.dropOldKeyFrames(static_cast<std::size_t>(opt_.keep_keyframes), in_use);
 	scrub();
-	st.ms.add("other", lapMs(t));
-	stats_ = st;
-	return st;
 }
 
 void LocalMapper::attach(KeyFrame* kf)

@@ -6,6 +6,19 @@
 
 namespace vlo::vo
 {
+namespace
+{
+/// What LocalMapper::finish() did, into the frame's info.
+void addFinished(VoFrameInfo& inf, const MappingStats& st)
+{
+	inf.mapping_ms.add("ba", st.ms.ms("ba"));
+	inf.mapping_ms.add("other", st.ms.ms("other"));
+	inf.ba_keyframes = st.ba.keyframes;
+	inf.ba_fixed = st.ba.fixed;
+	inf.ba_points = st.ba.points;
+}
+}  // namespace
+
 const char* toString(VoState s)
 {
 	switch (s)
@@ -36,6 +49,8 @@ VisualOdometry::~VisualOdometry() = default;
 
 VoFrameInfo VisualOdometry::process(const cv::Mat& gray, double t) { return impl_->process(gray, t); }
 
+void VisualOdometry::useMappingThread(bool on) { impl_->mapping_thread = on; }
+
 VoFrameInfo VisualOdometry::Impl::process(const cv::Mat& gray, double t)
 {
 	if (gray.type() != CV_8UC1 || gray.cols != cam.width || gray.rows != cam.height)
@@ -48,8 +63,10 @@ VoFrameInfo VisualOdometry::Impl::process(const cv::Mat& gray, double t)
 	info.ms.add("extract", msSince(t0));
 	info.features = static_cast<int>(current_feat->size());
 	TrackedFrame cur(info.index, t, current_feat);
+	if (mapper && mapper->pending() && mapper->dueFrame() <= info.index) finishMapping(info);
 
 	t0 = SteadyClock::now();
+	const double mapping_before = info.ms.ms("mapping");
 	if (state == VoState::Ok)
 	{
 		if (track(cur, info))
@@ -69,7 +86,7 @@ VoFrameInfo VisualOdometry::Impl::process(const cv::Mat& gray, double t)
 	}
 	else
 		initialise(cur, info);
-	info.ms.add("track", msSince(t0) - info.ms.ms("mapping"));
+	info.ms.add("track", msSince(t0) - (info.ms.ms("mapping") - mapping_before));
 
 	// Untracked frames stay LOST from a tracking failure until a new map is made.
 	info.state = cur.has_pose ? VoState::Ok : state;
@@ -121,7 +138,9 @@ bool VisualOdometry::Impl::track(TrackedFrame& cur, VoFrameInfo& inf)
 	}
 	cur.has_pose = true;
 	inf.reason = how;
-	if (tracker.needKeyFrame(inliers, cur.ref_kf, cur.index - last_kf_frame, map->numKeyFrames())) insertKeyFrame(cur, inf);
+	// No keyframe while the last one's mapping is pending (ORB-SLAM: while local mapping is busy).
+	if (!mapper->pending() && tracker.needKeyFrame(inliers, cur.ref_kf, cur.index - last_kf_frame, map->numKeyFrames()))
+		insertKeyFrame(cur, inf);
 	velocity = cur.Tcw * last.Tcw.inverse();
 	has_velocity = true;
 	return true;
@@ -133,17 +152,22 @@ void VisualOdometry::Impl::insertKeyFrame(TrackedFrame& cur, VoFrameInfo& inf)
 	KeyFrame* kf = map->addKeyFrame(cur.index, cur.t, cur.feat, cur.Tcw);
 	for (std::size_t i = 0; i < cur.size(); ++i)
 		if (cur.points[i] && !cur.points[i]->bad) kf->points[i] = cur.points[i];
-	const MappingStats st = mapper->process(kf);
-	inf.mapping_ms = st.ms;
+	const MappingStats st = mapper->process(kf, cur.index + opt.mapping.mapping_delay, mapping_thread);
+	for (const char* stage : {"triangulate", "fuse", "ba", "other"}) inf.mapping_ms.add(stage, st.ms.ms(stage));
 	inf.new_points = st.new_points;
-	inf.ba_keyframes = st.ba.keyframes;
-	inf.ba_fixed = st.ba.fixed;
-	inf.ba_points = st.ba.points;
-	cur.Tcw = kf->Tcw;  // the frame is the keyframe: take its bundle-adjusted pose
+	if (opt.mapping.mapping_delay == 0 && mapper->pending()) addFinished(inf, mapper->finish());
+	cur.Tcw = kf->Tcw;  // the frame is the keyframe: its bundle-adjusted pose once adjusted
 	cur.ref_kf = kf;
 	last_kf = kf;
 	last_kf_frame = cur.index;
 	inf.keyframe = true;
+	inf.ms.add("mapping", msSince(t0));
+}
+
+void VisualOdometry::Impl::finishMapping(VoFrameInfo& inf)
+{
+	const auto t0 = SteadyClock::now();
+	addFinished(inf, mapper->finish());
 	inf.ms.add("mapping", msSince(t0));
 }
 

@@ -82,6 +82,7 @@ bool VisualOdometry::rescaleAboutWindow(double s)
 		p->max_dist *= s;
 	}
 	for (KeyFrame* kf : m.map->keyFrames()) Impl::scaleAbout(kf->Tcw, Ta, s);
+	m.mapper->scalePending(s);
 	m.rescaleCurrent([&](SE3& T) { Impl::scaleAbout(T, Ta, s); }, s);
 	return true;
 }
@@ -91,6 +92,7 @@ bool VisualOdometry::setMapScale(double s)
 	auto& m = *impl_;
 	if (!m.map || !(s > 0)) return false;
 	m.map->scale(s);
+	if (m.mapper) m.mapper->scalePending(s);
 	m.rescaleCurrent([&](SE3& T) { T.translation() *= s; }, s);
 	m.metric = true;
 	m.info.metric = true;

@@ -30,10 +30,12 @@ inline Eigen::Isometry3d toVehicle(const SensorRig& rig, const Eigen::Isometry3d
 }
 
 /// Drives `frames` frames along drivePose(); frames in [blank_from, blank_to) are uniform gray.
-inline Run runStreet(const PinholeCamera& cam, int frames, const VoOptions& opt, int blank_from = -1, int blank_to = -1)
+inline Run runStreet(const PinholeCamera& cam, int frames, const VoOptions& opt, int blank_from = -1, int blank_to = -1,
+	bool mapping_thread = false)
 {
 	StreetRenderer renderer(StreetScene(), cam);
 	VisualOdometry vo(cam, opt);
+	vo.useMappingThread(mapping_thread);
 	Run r;
 	for (int k = 0; k < frames; ++k)
 	{

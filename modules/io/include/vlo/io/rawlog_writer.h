@@ -1,5 +1,6 @@
 #pragma once
-// Writer of observation-only MRPT rawlogs (gzip). Images go as PNG to "<name>_Images/" beside the
+// Writer of observation-only MRPT rawlogs, gzip or plain (MRPT and RawlogReader read both; a plain one
+// is ~1.4x larger for a simulated HDL-64 drive but spares the reader the inflate). Images go as PNG to "<name>_Images/" beside the
 // file (external storage) unless inline. Nothing appears at `path` until commit(): the rawlog is
 // written to "<path>.partial" and the images to "<name>_Images.partial/", both renamed on commit.
 #include <vlo/core/frame.h>
@@ -17,11 +18,20 @@ namespace vlo
 /// "<dir>/<name>_Images" for "<dir>/<name>.<ext>": where MRPT looks for a rawlog's external images.
 std::string rawlogImagesDir(const std::string& rawlog_path);
 
+enum class RawlogCompression
+{
+	Gzip,
+	None
+};
+/// "gzip" or "none"; throws InputError naming `what` for anything else.
+RawlogCompression parseRawlogCompression(const std::string& name, const std::string& what);
+
 class RawlogWriter
 {
    public:
 	/// Throws InputError naming `path` when it cannot be created.
-	explicit RawlogWriter(const std::string& path, bool external_images = true);
+	explicit RawlogWriter(const std::string& path, bool external_images = true,
+		RawlogCompression compression = RawlogCompression::Gzip);
 	~RawlogWriter();  ///< removes the partial output if not committed
 	RawlogWriter(const RawlogWriter&) = delete;
 	RawlogWriter& operator=(const RawlogWriter&) = delete;

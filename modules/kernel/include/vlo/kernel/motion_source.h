@@ -22,6 +22,7 @@ struct MotionSourceSetup
 	std::string visual_odometry;  ///< registry<VisualOdometryModule>() name
 	std::string scale_correction;  ///< registry<ScaleCorrectionModule>() name (monocular VO only)
 	int snapshot_every = 0;  ///< keep every N-th frame's diagnostics for a snapshot (0 = none)
+	int threads = 1;  ///< [pipeline] threads as a count: the composed modules may use threads of their own
 };
 
 class MotionSource

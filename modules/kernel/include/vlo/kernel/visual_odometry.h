@@ -28,6 +28,9 @@ class VisualOdometryModule
 	virtual ~VisualOdometryModule() = default;
 	/// Loads and validates this module's options from the run configuration.
 	virtual void configure(RunConfig& config) = 0;
+	/// The threads the run may use (1 or 2): a module may then work beside its caller, at fixed frames
+	/// so that its results do not change.
+	virtual void useThreads(int /*threads*/) {}
 	/// Tracks one frame (its image and rig) and writes its diagnostics columns.
 	virtual VisualOdometryStep process(const Frame& frame, FrameTable& table) = 0;
 };

@@ -49,7 +49,10 @@ struct PipelineOptions : public OptionSet
 
 	RunPlan plan() const;
 	/// The module names a motion source composes.
-	MotionSourceSetup motionSourceSetup() const { return {visual_odometry, scale_correction, scale_snapshot_every}; }
+	MotionSourceSetup motionSourceSetup() const
+	{
+		return {visual_odometry, scale_correction, scale_snapshot_every, threadCount()};
+	}
 
    protected:
 	void declare(OptionTable& t) override;

@@ -1,6 +1,7 @@
 #pragma once
 // Runs a simulator over all its frames and writes FILE.rawlog (+ FILE_Images/), FILE.gt.tum and,
 // on request, the KITTI odometry layout. Nothing is left behind if it fails half-way.
+#include <vlo/io/rawlog_writer.h>
 #include <vlo/sim/simulator.h>
 
 #include <string>
@@ -10,6 +11,7 @@ namespace vlo::sim
 struct OutputOptions
 {
 	std::string rawlog;  ///< FILE.rawlog
+	RawlogCompression compression = RawlogCompression::Gzip;
 	std::string kitti_dir;  ///< "" = no KITTI export
 	std::string description;  ///< recorded in the KITTI export (the command line)
 	bool progress = true;

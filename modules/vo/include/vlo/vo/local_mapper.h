@@ -1,9 +1,11 @@
 #pragma once
-// Local mapping after each new keyframe (ORB-SLAM's LocalMapping, run inline): attach the
-// keyframe's points, cull young points that are rarely found, triangulate new points with the
-// covisible keyframes, fuse duplicates, bundle-adjust the local window, cull redundant keyframes and
-// drop those far behind the window.
+// Local mapping after each new keyframe (ORB-SLAM's LocalMapping): attach the keyframe's points,
+// cull young points that are rarely found, triangulate new points with the covisible keyframes, fuse
+// duplicates (all inline, in process()); then bundle-adjust the local window and cull redundant
+// keyframes and drop those far behind the window, which finish() does at a later, fixed frame
+// (bundle_job.h; doc/SPEED.md).
 #include <vlo/core/stage_times.h>
+#include <vlo/vo/bundle_job.h>
 #include <vlo/vo/map.h>
 #include <vlo/vo/matcher.h>
 #include <vlo/vo/optimizer.h>
@@ -23,8 +25,21 @@ class LocalMapper
 	LocalMapper(Map& map, const PinholeCamera& cam, const ScalePyramid& pyr, const MappingOptions& opt,
 		const TrackingOptions& topt);
 
-	/// kf->points holds the points tracked in its frame; observations are added here.
-	MappingStats process(KeyFrame* kf);
+	/// kf->points holds the points tracked in its frame; observations are added here. Starts the
+	/// bundle adjustment due when frame `due_frame` starts (on a thread when `threaded`), which
+	/// finish() applies; without local BA the keyframes are culled at once and nothing is pending.
+	MappingStats process(KeyFrame* kf, long due_frame, bool threaded);
+	/// A bundle adjustment waits for finish(); no keyframe may be added meanwhile.
+	bool pending() const { return job_ != nullptr; }
+	long dueFrame() const { return job_ ? job_->dueFrame() : -1; }
+	/// The map was scaled by s since the pending bundle adjustment was started.
+	void scalePending(double s)
+	{
+		if (job_) job_->scale(s);
+	}
+	/// Applies the pending bundle adjustment (waiting for it) and culls redundant keyframes around
+	/// its keyframe. Stats of the BA and the culling; times under "ba" and "other".
+	MappingStats finish();
 	const MappingStats& lastStats() const { return stats_; }
 	/// Registers points made elsewhere (map initialisation) for the young-point culling.
 	void addRecent(MapPoint* mp) { recent_.push_back(mp); }
@@ -40,6 +55,8 @@ class LocalMapper
 	int createPoints(KeyFrame* kf);
 	int fuseNeighbours(KeyFrame* kf);
 	int cullKeyFrames(KeyFrame* kf);
+	/// After the BA: culls redundant keyframes around kf and drops those far behind the local window.
+	void cullAround(KeyFrame* kf, MappingStats& st);
 
 	Map& map_;
 	const PinholeCamera& cam_;
@@ -50,5 +67,7 @@ class LocalMapper
 	std::vector<MapPoint*> recent_;
 	BundleWindow window_;
 	MappingStats stats_;
+	std::unique_ptr<BundleJob> job_;
+	KeyFrame* job_kf_ = nullptr;
 };
 }  // namespace vlo::vo

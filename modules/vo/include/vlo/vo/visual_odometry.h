@@ -1,7 +1,8 @@
 #pragma once
-// Monocular visual odometry after ORB-SLAM2 (tracking and local mapping, no loop closing), single
-// threaded: process() extracts features, initialises a map or tracks the frame, and runs local
-// mapping inline when it makes a keyframe. After LOST a new map is initialised and placed where the
+// Monocular visual odometry after ORB-SLAM2 (tracking and local mapping, no loop closing):
+// process() extracts features, initialises a map or tracks the frame, and runs local mapping when it
+// makes a keyframe, its bundle adjustment entering the map [vo.mapping] mapping_delay frames later
+// (on a thread of its own with useMappingThread(); the results are the same). After LOST a new map is initialised and placed where the
 // old trajectory left off, so the output trajectory continues (see doc/VO.md for its scale).
 //
 // For the scale corrector: each frame's relative motion, the local window of the last local bundle
@@ -87,6 +88,9 @@ class VisualOdometry
 
 	/// gray: 8-bit, one channel, the camera's size. Never throws for image content (blank, dark).
 	VoFrameInfo process(const cv::Mat& gray, double t);
+	/// Solves each keyframe's local bundle adjustment on a thread beside tracking (default: off, solved
+	/// when due). Changes no result.
+	void useMappingThread(bool on);
 
 	// --- scale corrector interface ---
 	const VoFrameInfo& lastInfo() const;

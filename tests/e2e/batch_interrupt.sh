@@ -34,7 +34,7 @@ interrupt() {
 	local sig=$1 name=$2 ready=$3 text=$4
 	"$BIN/vlo-batch" --plan "$name.ini" --out "$name" --jobs 2 > "$name.log" 2> "$name.err" &
 	local pid=$!
-	for _ in $(seq 300); do  # at most 60 s
+	for _ in $(seq 1500); do  # at most 300 s: generating the drive first takes minutes on a loaded machine
 		[ -e "$ready" ] && break
 		sleep 0.2
 	done

@@ -30,7 +30,8 @@ refused "VO never initialised" 2 "the visual odometry never initialised in 1 fra
 rm -rf out
 "$BIN/vlo-run" --rawlog many.rawlog --ini "$INI/vlp16.ini" --out out/a/b --quiet > /dev/null 2> int.txt &
 pid=$!
-sleep 2  # in its setup or its frame loop: either way the signal is honoured at the next frame
+# in its setup or its frame loop: either way the signal is honoured at the next frame
+catching "$pid" 2 || fail "Ctrl-C: vlo-run never caught SIGINT (ended or hung in its start-up)"
 kill -INT "$pid"
 wait "$pid"
 rc=$?

@@ -30,6 +30,18 @@ with open(path, newline="") as f:
         print(row[c])
 PY
 }
+# catching PID SIGNUM: waits (at most 60 s) until process PID has a handler for signal SIGNUM. A background
+# job of a script starts with SIGINT ignored, so a signal sent before the program installs its handler is
+# lost (on a loaded machine its start-up alone can take seconds). Fails when the process ends first.
+catching() {
+	local mask
+	for _ in $(seq 600); do
+		mask=$(awk '/^SigCgt:/ { print $2 }' "/proc/$1/status" 2> /dev/null) || return 1
+		[ -n "$mask" ] && (((16#$mask >> ($2 - 1)) & 1)) && return 0
+		sleep 0.1
+	done
+	return 1
+}
 finish() {
 	if [ $fails -gt 0 ]; then echo "$1: $fails failure(s)"; exit 1; fi
 	if [ $skips -gt 0 ]; then echo "$1: passed, $skips check(s) skipped"; exit 77; fi

@@ -94,6 +94,11 @@ struct OdometryOptions : public OptionSet
 /// Scan-to-map registration and the bounded local map.
 struct MappingOptions : public OptionSet
 {
+	/// Cauchy in scan-to-map: matches to what moved (traffic, ghosts, leaves) weigh less than with Huber,
+	/// better on 5 of the paper table's 7 drives and with traffic (doc/RESULTS.md). Scan-to-scan keeps
+	/// Huber: Cauchy there loses LOAM among foliage.
+	MappingOptions() { solver.loss = "cauchy"; }
+
 	bool enabled = true;
 	SolverOptions solver;
 	double edge_leaf = 0.4, plane_leaf = 0.8;  ///< downsampling of the scan's features [m]

@@ -27,7 +27,8 @@ int main(int argc, char** argv)
 				{"foliage-depth", "M", "mean depth of LiDAR returns inside tree crowns and bushes (default 0: solid hulls)"},
 				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
 				{"traffic", "N", "N vehicles driving the road both ways, overtaking and oncoming (default 0)"},
-				{"rawlog-compression", "gzip|none", "gzip (default) or none: ~1.4x larger, read with less CPU (doc/SPEED.md)"}},
+				{"rawlog-compression", "gzip|none", "gzip (default) or none: ~1.4x larger, read with less CPU (doc/SPEED.md)"},
+				{"image-format", "png|pnm", "png (default) or pnm (PGM): ~1.8x larger images, read with less CPU (doc/SPEED.md)"}},
 			"vlo-sim --out FILE.rawlog [options]\n\n"
 			  "Renders a seeded procedural drive headless: a grayscale camera (KITTI intrinsics) and a\n"
 			  "spinning LiDAR, 10 Hz, with ground truth in FILE.gt.tum (vehicle frame, relative to frame 0).");
@@ -53,6 +54,7 @@ int main(int argc, char** argv)
 		if (traffic < 0 || traffic > 1000) vlo::failInput("--traffic", "must be between 0 and 1000 vehicles");
 		cfg.traffic = static_cast<int>(traffic);
 		const auto compression = vlo::parseRawlogCompression(cl.get("rawlog-compression", "gzip"), "--rawlog-compression");
+		const auto image_format = vlo::parseImageFileFormat(cl.get("image-format", "png"), "--image-format");
 		if (cl.has("blackout"))
 		{
 			const std::string b = cl.get("blackout");
@@ -74,6 +76,7 @@ int main(int argc, char** argv)
 		vlo::sim::OutputOptions out;
 		out.rawlog = cl.get("out");
 		out.compression = compression;
+		out.images = image_format;
 		out.kitti_dir = cl.get("kitti-dir");
 		out.description = cmd;
 		const auto st = vlo::sim::writeSequence(sim, out);

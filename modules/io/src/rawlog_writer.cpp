@@ -29,6 +29,7 @@ struct RawlogWriter::Impl
 	mrpt::io::CFileGZOutputStream gz;
 	mrpt::io::CFileOutputStream plain;
 	bool compressed = true;
+	ImageFileFormat image_format = ImageFileFormat::Png;
 	mrpt::serialization::CArchive::UniquePtr ar;
 
 	void close()
@@ -54,10 +55,19 @@ RawlogCompression parseRawlogCompression(const std::string& name, const std::str
 	failInput(what, "'" + name + "' is not a rawlog compression (gzip | none)");
 }
 
-RawlogWriter::RawlogWriter(const std::string& path, bool external_images, RawlogCompression compression)
+ImageFileFormat parseImageFileFormat(const std::string& name, const std::string& what)
+{
+	if (name == "png") return ImageFileFormat::Png;
+	if (name == "pnm") return ImageFileFormat::Pnm;
+	failInput(what, "'" + name + "' is not an image file format (png | pnm)");
+}
+
+RawlogWriter::RawlogWriter(
+	const std::string& path, bool external_images, RawlogCompression compression, ImageFileFormat images)
 	: impl_(std::make_unique<Impl>())
 {
 	auto& d = *impl_;
+	d.image_format = images;
 	d.path = path;
 	d.partial = path + ".partial";
 	d.external = external_images;
@@ -112,8 +122,9 @@ void RawlogWriter::writeFrame(const Frame& frame, const std::string& camera_labe
 		auto obs = toImageObservation(frame, camera_label);
 		if (d.external)
 		{
+			const char* ext = d.image_format == ImageFileFormat::Png ? "png" : obs->image.isColor() ? "ppm" : "pgm";
 			char name[64];
-			std::snprintf(name, sizeof(name), "_%06zu.png", frame.index);
+			std::snprintf(name, sizeof(name), "_%06zu.%s", frame.index, ext);
 			const std::string file = camera_label + name;
 			if (!obs->image.saveToFile(d.images_partial + "/" + file))
 				failInput(d.images_partial + "/" + file, "cannot write image");

@@ -96,6 +96,31 @@ TEST_P(RoundTrip, FramesTimesRigImagesAndPoints)
 }
 INSTANTIATE_TEST_SUITE_P(Images, RoundTrip, ::testing::Values(true, false));
 
+TEST(RawlogWriter, PgmImagesReadBackIdentical)
+{
+	const std::string dir = freshDir("_pgm"), path = dir + "/x.rawlog";
+	std::vector<Frame> in;
+	{
+		RawlogWriter w(path, true, RawlogCompression::None, ImageFileFormat::Pnm);
+		for (std::size_t k = 0; k < 3; ++k)
+		{
+			in.push_back(testFrame(k, 0.1 * static_cast<double>(k)));
+			w.writeFrame(in.back());
+		}
+		w.commit();
+	}
+	EXPECT_TRUE(fs::exists(dir + "/x_Images/CAMERA_000002.pgm"));
+	EXPECT_FALSE(fs::exists(dir + "/x_Images/CAMERA_000002.png"));
+	const auto out = readFrames(path);
+	ASSERT_EQ(out.size(), in.size());
+	for (std::size_t k = 0; k < in.size(); ++k)
+	{
+		ASSERT_TRUE(out[k].has_image);
+		expectSameImage(in[k].image, out[k].image);
+	}
+	EXPECT_THROW(parseImageFileFormat("jpg", "--image-format"), InputError);
+}
+
 TEST(RawlogReader, ColourImagesBecomeGray)
 {
 	const std::string path = freshDir() + "/c.rawlog";

@@ -72,19 +72,22 @@ int VoxelMap::knn(const Eigen::Vector3f& q, int k, float max_dist, Eigen::Vector
 		const float g = (frac < 0.5f ? frac : 1.0f - frac) * static_cast<float>(size_);
 		gap2[a] = g * g;
 	}
+	// A candidate must be closer than `limit`: max_dist, and once k are found the k-th best as well.
+	float limit = max2;
 	for (int o = 0; o < 8; ++o)
 	{
 		const int dx = o & 1, dy = (o >> 1) & 1, dz = (o >> 2) & 1;
 		// Skip a neighbour voxel that cannot hold anything closer than the current k-th best.
 		const float box2 = dx * gap2.x() + dy * gap2.y() + dz * gap2.z();
-		if (box2 >= max2 || (n == k && box2 >= best_d2[n - 1])) continue;
+		if (box2 >= limit) continue;
 		const std::uint32_t id = index_.find(voxelKey(base + Eigen::Vector3i(dx * step.x(), dy * step.y(), dz * step.z())));
 		if (id == VoxelHash::kNone) continue;
-		const std::vector<Eigen::Vector3f>& pts = voxels_[id].points;
-		for (std::uint32_t j = 0; j < pts.size(); ++j)
+		const Eigen::Vector3f* pts = voxels_[id].points.data();
+		const auto m = static_cast<std::uint32_t>(voxels_[id].points.size());
+		for (std::uint32_t j = 0; j < m; ++j)
 		{
 			const float d2 = (pts[j] - q).squaredNorm();
-			if (d2 >= max2 || (n == k && d2 >= best_d2[n - 1])) continue;
+			if (d2 >= limit) continue;
 			// Insertion into the sorted best list.
 			int i = n < k ? n++ : n - 1;
 			while (i > 0 && best_d2[i - 1] > d2)
@@ -95,6 +98,7 @@ int VoxelMap::knn(const Eigen::Vector3f& q, int k, float max_dist, Eigen::Vector
 			}
 			best_d2[i] = d2;
 			best_p[i] = {id, j};
+			if (n == k) limit = std::min(max2, best_d2[k - 1]);
 		}
 	}
 	for (int i = 0; i < n; ++i)

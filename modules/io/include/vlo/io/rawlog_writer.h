@@ -1,7 +1,7 @@
 #pragma once
 // Writer of observation-only MRPT rawlogs, gzip or plain (MRPT and RawlogReader read both; a plain one
 // is ~1.4x larger for a simulated HDL-64 drive but spares the reader the inflate). Images go as PNG to "<name>_Images/" beside the
-// file (external storage) unless inline. Nothing appears at `path` until commit(): the rawlog is
+// file (external storage) unless inline; PGM/PPM on request (no PNG decoding when read). Nothing appears at `path` until commit(): the rawlog is
 // written to "<path>.partial" and the images to "<name>_Images.partial/", both renamed on commit.
 #include <vlo/core/frame.h>
 
@@ -26,12 +26,21 @@ enum class RawlogCompression
 /// "gzip" or "none"; throws InputError naming `what` for anything else.
 RawlogCompression parseRawlogCompression(const std::string& name, const std::string& what);
 
+/// File format of external images: PNG, or PGM/PPM (uncompressed: ~1.8x larger, no inflate to read).
+enum class ImageFileFormat
+{
+	Png,
+	Pnm
+};
+/// "png" or "pnm"; throws InputError naming `what` for anything else.
+ImageFileFormat parseImageFileFormat(const std::string& name, const std::string& what);
+
 class RawlogWriter
 {
    public:
 	/// Throws InputError naming `path` when it cannot be created.
 	explicit RawlogWriter(const std::string& path, bool external_images = true,
-		RawlogCompression compression = RawlogCompression::Gzip);
+		RawlogCompression compression = RawlogCompression::Gzip, ImageFileFormat images = ImageFileFormat::Png);
 	~RawlogWriter();  ///< removes the partial output if not committed
 	RawlogWriter(const RawlogWriter&) = delete;
 	RawlogWriter& operator=(const RawlogWriter&) = delete;
@@ -39,7 +48,8 @@ class RawlogWriter
 	/// Writes one observation as it is (an externally stored image must already be in place).
 	void write(const mrpt::obs::CObservation& obs);
 	/// Writes the frame's image and scan (whichever it has) with the rig's poses and intrinsics, at
-	/// time frame.t. External images are named "<label>_<frame.index, 6 digits>.png".
+	/// time frame.t. External images are named "<label>_<frame.index, 6 digits>.png" (or .pgm for a
+	/// grey image in Pnm, .ppm for a colour one).
 	void writeFrame(const Frame& frame, const std::string& camera_label = "CAMERA",
 		const std::string& lidar_label = "LIDAR");
 	void commit();

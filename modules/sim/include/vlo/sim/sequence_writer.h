@@ -12,6 +12,7 @@ struct OutputOptions
 {
 	std::string rawlog;  ///< FILE.rawlog
 	RawlogCompression compression = RawlogCompression::Gzip;
+	ImageFileFormat images = ImageFileFormat::Png;
 	std::string kitti_dir;  ///< "" = no KITTI export
 	std::string description;  ///< recorded in the KITTI export (the command line)
 	bool progress = true;

@@ -26,18 +26,14 @@ struct RawlogWriter::Impl
 	std::string path, partial, images_dir, images_partial;
 	bool external = true, committed = false;
 	std::size_t written = 0;
-	mrpt::io::CFileGZOutputStream gz;
-	mrpt::io::CFileOutputStream plain;
-	bool compressed = true;
+	std::unique_ptr<mrpt::io::CStream> out;  // gzip or plain; closed when reset
 	ImageFileFormat image_format = ImageFileFormat::Png;
 	mrpt::serialization::CArchive::UniquePtr ar;
 
 	void close()
 	{
-		if (compressed)
-			gz.close();
-		else
-			plain.close();
+		ar.reset();
+		out.reset();
 	}
 	void discard() noexcept
 	{
@@ -77,14 +73,21 @@ RawlogWriter::RawlogWriter(
 	if (fs::is_directory(path, ec)) failInput(path, "is a directory, expected a rawlog file name");
 	const fs::path parent = fs::path(path).parent_path();
 	if (!parent.empty()) fs::create_directories(parent, ec);
-	d.compressed = compression == RawlogCompression::Gzip;
-	const bool opened = d.compressed ? d.gz.open(d.partial, 1 /*fast gzip: point clouds barely compress*/)
-									 : d.plain.open(d.partial);
-	if (!opened) failInput(path, "cannot open for writing");
-	if (d.compressed)
-		d.ar = mrpt::serialization::archiveUniquePtrFrom(d.gz);
+	bool opened = false;
+	if (compression == RawlogCompression::Gzip)
+	{
+		auto gz = std::make_unique<mrpt::io::CFileGZOutputStream>();
+		opened = gz->open(d.partial, 1 /*fast gzip: point clouds barely compress*/);
+		d.out = std::move(gz);
+	}
 	else
-		d.ar = mrpt::serialization::archiveUniquePtrFrom(d.plain);
+	{
+		auto plain = std::make_unique<mrpt::io::CFileOutputStream>();
+		opened = plain->open(d.partial);
+		d.out = std::move(plain);
+	}
+	if (!opened) failInput(path, "cannot open for writing");
+	d.ar = mrpt::serialization::archiveUniquePtrFrom(*d.out);
 	if (d.external)
 	{
 		fs::remove_all(d.images_partial, ec);

@@ -1,7 +1,8 @@
 #pragma once
 // Writer of observation-only MRPT rawlogs, gzip or plain (MRPT and RawlogReader read both; a plain one
-// is ~1.4x larger for a simulated HDL-64 drive but spares the reader the inflate). Images go as PNG to "<name>_Images/" beside the
-// file (external storage) unless inline; PGM/PPM on request (no PNG decoding when read). Nothing appears at `path` until commit(): the rawlog is
+// is ~1.4x larger for a simulated HDL-64 drive but spares the reader the inflate). Images go as PNG to
+// "<name>_Images/" beside the file (external storage) unless inline; PGM/PPM on request (no PNG
+// decoding when read). Nothing appears at `path` until commit(): the rawlog is
 // written to "<path>.partial" and the images to "<name>_Images.partial/", both renamed on commit.
 #include <vlo/core/frame.h>
 

@@ -94,6 +94,9 @@ struct OdometryOptions : public OptionSet
 /// Scan-to-map registration and the bounded local map.
 struct MappingOptions : public OptionSet
 {
+	/// Cauchy: matches to what moved or what the map holds from elsewhere weigh less (doc/LOAM.md step 5).
+	MappingOptions() { solver.loss = "cauchy"; }
+
 	bool enabled = true;
 	SolverOptions solver;
 	double edge_leaf = 0.4, plane_leaf = 0.8;  ///< downsampling of the scan's features [m]

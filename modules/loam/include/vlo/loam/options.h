@@ -28,8 +28,9 @@ struct ScanOptions : public OptionSet
 	bool point_times = true;  ///< a scan with the sensor's per-point times is deskewed with them, to the frame's time
 	double deskew_reference = 1.0;  ///< fraction of the sweep the scan's pose refers to
 	int max_deskew_passes = 3;  ///< deskew + register again while the motion found still changes
-	double deskew_tolerance = 0.01;  ///< ... by more than this [m]
-	double deskew_tolerance_deg = 0.1;  ///< ... or this [deg]
+	/// ... by more than this [m] (a rolling sweep's drift needs it settled to millimetres: doc/RESULTS.md)
+	double deskew_tolerance = 0.002;
+	double deskew_tolerance_deg = 0.02;  ///< ... or this [deg]
 
    protected:
 	void declare(OptionTable& t) override;
@@ -94,6 +95,9 @@ struct OdometryOptions : public OptionSet
 /// Scan-to-map registration and the bounded local map.
 struct MappingOptions : public OptionSet
 {
+	/// Cauchy: matches to what moved or what the map holds from elsewhere weigh less (doc/LOAM.md step 5).
+	MappingOptions() { solver.loss = "cauchy"; }
+
 	bool enabled = true;
 	SolverOptions solver;
 	double edge_leaf = 0.4, plane_leaf = 0.8;  ///< downsampling of the scan's features [m]

@@ -27,6 +27,7 @@ int main(int argc, char** argv)
 				{"foliage-depth", "M", "mean depth of LiDAR returns inside tree crowns and bushes (default 0: solid hulls)"},
 				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
 				{"traffic", "N", "N vehicles driving the road both ways, overtaking and oncoming (default 0)"},
+				{"traffic-without-returns", "", "the vehicles block the LiDAR's beams but return nothing (an ideal removal of moving points)"},
 				{"rawlog-compression", "gzip|none", "gzip (default) or none: ~1.4x larger, read with less CPU (doc/SPEED.md)"},
 				{"image-format", "png|pnm", "png (default) or pnm (PGM): ~1.8x larger images, read with less CPU (doc/SPEED.md)"}},
 			"vlo-sim --out FILE.rawlog [options]\n\n"
@@ -53,6 +54,8 @@ int main(int argc, char** argv)
 		const long traffic = cl.getInt("traffic", 0);
 		if (traffic < 0 || traffic > 1000) vlo::failInput("--traffic", "must be between 0 and 1000 vehicles");
 		cfg.traffic = static_cast<int>(traffic);
+		cfg.traffic_lidar_returns = !cl.has("traffic-without-returns");
+		if (!cfg.traffic_lidar_returns && cfg.traffic == 0) vlo::failInput("--traffic-without-returns", "needs --traffic N");
 		const auto compression = vlo::parseRawlogCompression(cl.get("rawlog-compression", "gzip"), "--rawlog-compression");
 		const auto image_format = vlo::parseImageFileFormat(cl.get("image-format", "png"), "--image-format");
 		if (cl.has("blackout"))

@@ -8,6 +8,7 @@ INI="${VLO_SRC:?}/ini"
 
 expect_exit2 "negative traffic" "--traffic" bad "$BIN/vlo-sim" --traffic -1 --frames 2 --out bad/x.rawlog
 expect_exit2 "traffic not a number" "--traffic" bad "$BIN/vlo-sim" --traffic many --frames 2 --out bad/x.rawlog
+expect_exit2 "no returns without traffic" "--traffic-without-returns" bad "$BIN/vlo-sim" --traffic-without-returns --frames 2 --out bad/x.rawlog
 
 FRAMES=50
 "$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames $FRAMES --seed 21 --traffic 5 --out drive.rawlog > sim.txt ||

@@ -111,6 +111,7 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 			if (!hit) continue;
 			const double noisy = r + noise.range_sigma * rng.normal();
 			if (rng.uniform() < noise.dropout || noisy < model_.min_range || noisy > model_.max_range) continue;
+			if (face >= 0 && !moving->returns) continue;  // after the draws: the other returns keep their noise
 			const Eigen::Vector3d p = noisy * dL;
 			// A rolling sweep is written as a Velodyne scan, whose intensity is the sensor's 8-bit reflectivity:
 			// it carries the grey level itself (0-255), so that the rawlog and a KITTI export hold the same value.

@@ -172,6 +172,7 @@ Frame Simulator::frame(int k, RenderedView* camera_depth)
 		nearby = d.traffic.near(lidarAt(0).translation(), d.cfg.lidar.max_range, t, d.cfg.lidar.period);
 		moving.at = [&](double tau) { return d.traffic.placed(nearby, t + tau); };
 		moving.gray = [&](int slot) { return d.trafficMesh->gray(slot); };
+		moving.returns = d.cfg.traffic_lidar_returns;
 	}
 	d.renderer->render(d.scene, views, tiles, true, d.trafficMesh ? d.trafficMesh->object().get() : nullptr);
 

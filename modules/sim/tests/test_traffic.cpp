@@ -9,7 +9,9 @@
 #include <vlo/sim/simulator.h>
 #include <vlo/sim/traffic.h>
 
+#include <array>
 #include <cmath>
+#include <set>
 
 using namespace vlo;
 using namespace vlo::sim;
@@ -172,4 +174,59 @@ TEST(Traffic, LidarSeesEachVehicleAtItsFiringTimeAndTheCameraAtTheImageTime)
 	EXPECT_GT(offThen, 0.2 * onVehicle) << "points that only the vehicles at the firing time explain";
 	EXPECT_GT(inImage, 100u);
 	EXPECT_GE(imageAgrees, 0.9 * inImage) << imageAgrees << " of " << inImage;
+}
+
+// --traffic-without-returns: the vehicles block beams and return nothing (the floor for any removal of
+// moving points, doc/RESULTS.md "Moving traffic"): the scan is the one with returns less exactly its
+// returns from vehicles (noise off: the same points), and no return lies behind a vehicle.
+TEST(Traffic, WithoutReturnsTheVehiclesHideTheWorldAndShowNothing)
+{
+	auto config = [](bool returns) {
+		SimConfig cfg;
+		cfg.lidar = lidarByName("vlp16");
+		cfg.frames = 200, cfg.seed = 8, cfg.traffic = 40, cfg.traffic_lidar_returns = returns;
+		cfg.lidar_distortion = true;  // each point's firing time, to place the vehicles
+		cfg.range_noise = cfg.image_noise = cfg.dropout = 0;
+		return cfg;
+	};
+	int best = 0, most = -1;
+	Frame h;
+	{
+		Simulator hidden(config(false));  // one simulator at a time
+		for (int k = 0; k < hidden.frameCount(); k += 5)
+			if (hidden.vehiclesWithin(k, 20) > most) most = hidden.vehiclesWithin(k, 20), best = k;
+		h = hidden.frame(best);
+	}
+	ASSERT_GE(most, 2);
+	Simulator seen(config(true));
+	const Frame s = seen.frame(best);
+	const Traffic& tr = seen.traffic();
+	std::vector<std::size_t> all(tr.vehicles().size());
+	for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+	// Range at which the beam through p meets a vehicle at p's firing time (infinity: none).
+	auto vehicleRange = [&](const LidarPoint& p) {
+		const double t = seen.frameTime(best) + p.time;
+		const Eigen::Isometry3d L = seen.vehiclePoseAt(t) * h.rig.vehicle_T_lidar;
+		const Eigen::Vector3d pl(p.x, p.y, p.z);
+		double r = 0;
+		return Traffic::raycast(tr.placed(all, t), L.translation(), L.linear() * pl.normalized(), 200, r) < 0 ? HUGE_VAL : r;
+	};
+	std::set<std::array<float, 3>> hiddenPoints;
+	std::size_t behind = 0;
+	for (const auto& p : h.scan)
+	{
+		hiddenPoints.insert({p.x, p.y, p.z});
+		behind += vehicleRange(p) < std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z) - 0.01;
+	}
+	EXPECT_EQ(behind, 0u) << "returns from behind a vehicle";
+	std::size_t onVehicles = 0, elsewhere = 0;
+	for (const auto& p : s.scan)
+	{
+		const bool onVehicle = std::abs(vehicleRange(p) - std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z)) < 0.01;
+		onVehicles += onVehicle;
+		elsewhere += !onVehicle && hiddenPoints.count({p.x, p.y, p.z});
+	}
+	EXPECT_GT(onVehicles, 200u) << "vehicles within 20 m";
+	EXPECT_EQ(elsewhere, h.scan.size()) << "every return without the vehicles' is one of the scan with them";
+	EXPECT_EQ(s.scan.size(), h.scan.size() + onVehicles) << "and only the vehicles' returns are missing";
 }

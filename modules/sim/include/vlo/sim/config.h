@@ -61,6 +61,9 @@ struct SimConfig
 	int blackout_first = -1, blackout_end = -1;
 	/// Vehicles driving the road in both directions, seen by both sensors (traffic.h); 0 = a static world.
 	int traffic = 0;
+	/// false: the vehicles block the LiDAR's beams but return nothing, as if every moving point had been
+	/// removed perfectly (what rejecting moving points can at best reach); the camera still sees them.
+	bool traffic_lidar_returns = true;
 	/// KITTI camera-0 poses to drive along instead of a generated drive ("" = generate).
 	std::string kitti_poses;
 };

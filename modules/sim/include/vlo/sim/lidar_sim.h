@@ -34,6 +34,7 @@ struct MovingObjects
 {
 	std::function<std::vector<Traffic::Placed>(double tau)> at;  ///< where they are at t + tau
 	std::function<uint8_t(int slot)> gray;  ///< grey level (0-255) of a face, by texture slot
+	bool returns = true;  ///< false: they block beams but return nothing (SimConfig::traffic_lidar_returns)
 };
 
 class LidarSim

@@ -82,6 +82,9 @@ struct TrackingOptions : public OptionSet
 	int min_frames_between_keyframes = 0;
 	double keyframe_ref_ratio = 0.9;  ///< tracked < ratio * reference keyframe's points: new keyframe
 	int keyframe_min_inliers = 15;  ///< no keyframe from a frame tracked this poorly
+	/// Fewer inliers: a keyframe whatever the reference keyframe tracks. A keyframe made from a weakly
+	/// tracked frame has few points seen thrice, so the ratio alone waits until tracking is lost.
+	int keyframe_weak_inliers = 50;
 	bool reinit_extrapolate = true;  ///< a new map starts where constant velocity puts it
 	bool reinit_keep_depth = true;  ///< a new map gets the old map's median scene depth (scale)
 

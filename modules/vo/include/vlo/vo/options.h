@@ -112,7 +112,7 @@ struct MappingOptions : public OptionSet
 	int max_ba_keyframes = 20;  ///< optimised keyframes (current + best covisible)
 	/// Keyframe k's local BA (and keyframe culling) enters the map when frame k + this starts; until
 	/// then it runs beside tracking (doc/SPEED.md). 0: inline, at keyframe k.
-	int mapping_delay = 0;
+	int mapping_delay = 1;
 	int min_covisibility = 15;  ///< shared points for a covisibility edge
 	double redundant_ratio = 0.9;  ///< keyframe culled when this fraction of its points ...
 	int redundant_observers = 3;  ///< ... is seen by this many other keyframes at the same scale

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <queue>
 
@@ -45,12 +46,14 @@ std::vector<cv::KeyPoint> detectFast(const cv::Mat& roi, int cell, int strong, i
 namespace
 {
 /// Greedy suppression: in order of strength, a corner is kept when no kept one lies within r.
-/// Stops after `cap` corners. Occupancy cells of side r / sqrt(2) hold at most one kept corner.
+/// Stops after `cap` corners. Occupancy cells of side r / sqrt(2) hold at most one kept corner, its
+/// position inline (an empty cell lies infinitely far: no test for emptiness in the inner loop).
 std::vector<int> suppress(const std::vector<cv::KeyPoint>& kps, int w, int h, double r, std::size_t cap)
 {
 	const double cell = std::max(r / std::sqrt(2.0), 1.0);
 	const int cols = static_cast<int>(w / cell) + 1, rows = static_cast<int>(h / cell) + 1;
-	std::vector<int> occ(static_cast<std::size_t>(cols * rows), -1);
+	const float far = std::numeric_limits<float>::infinity();
+	std::vector<cv::Point2f> occ(static_cast<std::size_t>(cols * rows), cv::Point2f(far, far));
 	const int reach = static_cast<int>(std::ceil(r / cell));
 	const double r2 = r * r;
 	std::vector<int> kept;
@@ -60,21 +63,20 @@ std::vector<int> suppress(const std::vector<cv::KeyPoint>& kps, int w, int h, do
 		const int cx = static_cast<int>(p.x / cell), cy = static_cast<int>(p.y / cell);
 		bool free = true;
 		for (int y = std::max(0, cy - reach); free && y <= std::min(rows - 1, cy + reach); ++y)
+		{
+			const cv::Point2f* row = occ.data() + static_cast<std::size_t>(y * cols);
 			for (int x = std::max(0, cx - reach); x <= std::min(cols - 1, cx + reach); ++x)
 			{
-				const int j = occ[static_cast<std::size_t>(y * cols + x)];
-				if (j >= 0)
+				const cv::Point2f& q = row[x];
+				if ((p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) < r2)
 				{
-					const auto& q = kps[static_cast<std::size_t>(j)].pt;
-					if ((p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) < r2)
-					{
-						free = false;
-						break;
-					}
+					free = false;
+					break;
 				}
 			}
+		}
 		if (!free) continue;
-		occ[static_cast<std::size_t>(cy * cols + cx)] = i;
+		occ[static_cast<std::size_t>(cy * cols + cx)] = p;
 		kept.push_back(i);
 	}
 	return kept;

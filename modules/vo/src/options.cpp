@@ -62,6 +62,7 @@ void TrackingOptions::declare(OptionTable& t)
 	t.add("min_frames_between_keyframes", min_frames_between_keyframes, ">= 0", "no keyframe sooner than this");
 	t.add("keyframe_ref_ratio", keyframe_ref_ratio, "(0, 1]", "tracked < ratio * reference keyframe points: keyframe");
 	t.add("keyframe_min_inliers", keyframe_min_inliers, ">= 0", "no keyframe from a frame with fewer inliers");
+	t.add("keyframe_weak_inliers", keyframe_weak_inliers, ">= 0", "fewer inliers: keyframe whatever the ratio (0: off)");
 	t.add("reinit_extrapolate", reinit_extrapolate, "true | false", "new map placed by constant velocity over the gap");
 	t.add("reinit_keep_depth", reinit_keep_depth, "true | false", "new map scaled to the old map's median depth");
 }

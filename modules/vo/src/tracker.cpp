@@ -141,6 +141,8 @@ bool Tracker::needKeyFrame(int inliers, const KeyFrame* ref, long frames_since_k
 	const int ref_matches = ref->trackedPoints(min_obs);
 	// ORB-SLAM: (c1a: max frames passed || c1b: min frames passed and local mapping idle) && c2.
 	// Inline local mapping is always idle, so c1b holds once the minimum has passed (checked above).
-	return inliers < opt_.keyframe_ref_ratio * ref_matches && inliers > opt_.keyframe_min_inliers;
+	// Plus: a frame close to the loss threshold needs new points, whatever its reference tracks.
+	const bool weak = inliers < opt_.keyframe_weak_inliers;
+	return (inliers < opt_.keyframe_ref_ratio * ref_matches || weak) && inliers > opt_.keyframe_min_inliers;
 }
 }  // namespace vlo::vo

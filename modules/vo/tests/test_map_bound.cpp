@@ -26,11 +26,13 @@ TEST(MapBound, LongDriveKeepsKeyframesAndPointsBounded)
 	const VoOptions opt;
 	const int frames = 600;  // 600 m
 	const auto run = test::runStreet(cam, frames, opt);
-	// The street's texture repeats every 41 m: the VO loses track twice in the first 300 m (frames 82 and
-	// 264, with or without dropping keyframes) and starts a new map. The last one must be long-lived.
+	// One map for the whole drive. Without keyframes from weakly tracked frames (keyframe_weak_inliers = 0)
+	// the VO lost track up to 3 times on this street (8 times over 6 texture seeds, at frames that
+	// depended on the seed and on mapping_delay).
 	int last_map = 0;
 	for (const auto& i : run.infos)
 		if (i.new_map) last_map = static_cast<int>(i.index);
+	EXPECT_EQ(run.lost, 0);
 	ASSERT_LE(last_map, frames / 2);
 	for (int k = last_map; k < frames; ++k) ASSERT_EQ(run.infos[static_cast<std::size_t>(k)].state, VoState::Ok) << k;
 

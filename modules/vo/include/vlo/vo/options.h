@@ -82,6 +82,9 @@ struct TrackingOptions : public OptionSet
 	int min_frames_between_keyframes = 0;
 	double keyframe_ref_ratio = 0.9;  ///< tracked < ratio * reference keyframe's points: new keyframe
 	int keyframe_min_inliers = 15;  ///< no keyframe from a frame tracked this poorly
+	/// Fewer inliers: a keyframe whatever the reference keyframe tracks. A keyframe made from a weakly
+	/// tracked frame has few points seen thrice, so the ratio alone waits until tracking is lost.
+	int keyframe_weak_inliers = 50;
 	bool reinit_extrapolate = true;  ///< a new map starts where constant velocity puts it
 	bool reinit_keep_depth = true;  ///< a new map gets the old map's median scene depth (scale)
 
@@ -109,7 +112,7 @@ struct MappingOptions : public OptionSet
 	int max_ba_keyframes = 20;  ///< optimised keyframes (current + best covisible)
 	/// Keyframe k's local BA (and keyframe culling) enters the map when frame k + this starts; until
 	/// then it runs beside tracking (doc/SPEED.md). 0: inline, at keyframe k.
-	int mapping_delay = 0;
+	int mapping_delay = 1;
 	int min_covisibility = 15;  ///< shared points for a covisibility edge
 	double redundant_ratio = 0.9;  ///< keyframe culled when this fraction of its points ...
 	int redundant_observers = 3;  ///< ... is seen by this many other keyframes at the same scale

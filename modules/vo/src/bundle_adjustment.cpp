@@ -1,6 +1,7 @@
 // Bundle adjustment of a keyframe window in the frame of its earliest keyframe (paper III-C).
 #include <vlo/vo/bundle_problem.h>
 
+#include <deque>
 #include <unordered_map>
 
 #include "reprojection_error.h"
@@ -60,13 +61,15 @@ void solveBundle(BundleProblem& p, int iterations, int refine_iterations, double
 	ceres::HuberLoss huber(std::sqrt(chi2));
 	// One pass: robust over every observation, or plain squares over the current inliers.
 	auto solve = [&](int its, bool robust) {
-		ceres::Problem::Options po;
-		po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-		ceres::Problem problem(po);
+		// The residuals live here, not in the problem: block allocations instead of one per
+		// observation, and no reference counting by the problem (a deque: cost functions cannot move).
+		std::deque<detail::ReprojectionError> residuals;
+		detail::PoseRotations rotations(p.poses.size());
+		ceres::Problem problem(detail::problemOptions());
 		for (const auto& o : p.obs)
 		{
 			if (!robust && isOutlier(o)) continue;
-			problem.AddResidualBlock(detail::ReprojectionError::create(o.px, o.inv_scale, p.cam), robust ? &huber : nullptr,
+			problem.AddResidualBlock(&residuals.emplace_back(o.px, o.inv_scale, p.cam, &rotations, o.pose), robust ? &huber : nullptr,
 				p.poses[o.pose].data(), p.points[o.point].data());
 		}
 		if (problem.NumResidualBlocks() == 0) return;

@@ -3,6 +3,8 @@
 
 #include "reprojection_error.h"
 
+#include <deque>
+
 namespace vlo::vo
 {
 int optimizePose(TrackedFrame& f, const PinholeCamera& cam, const ScalePyramid& pyr, int rounds, int iterations,
@@ -22,16 +24,15 @@ int optimizePose(TrackedFrame& f, const PinholeCamera& cam, const ScalePyramid& 
 	int inliers = static_cast<int>(idx.size());
 	for (int round = 0; round < rounds; ++round)
 	{
-		ceres::Problem::Options po;
-		po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-		ceres::Problem problem(po);
+		std::deque<detail::PoseOnlyError> residuals;
+		ceres::Problem problem(detail::problemOptions());
 		int n = 0;
 		for (std::size_t i : idx)
 		{
 			if (f.outlier[i]) continue;
 			const cv::KeyPoint& k = f.feat->keys[i];
 			// Robust only in the first rounds: once outliers are marked, plain least squares.
-			problem.AddResidualBlock(detail::PoseOnlyError::create(f.points[i]->pos, Vec2(k.pt.x, k.pt.y),
+			problem.AddResidualBlock(&residuals.emplace_back(f.points[i]->pos, Vec2(k.pt.x, k.pt.y),
 										 pyr.inv_scale[static_cast<std::size_t>(k.octave)], cam),
 				round < 2 ? &huber : nullptr, pose);
 			++n;

@@ -1,6 +1,7 @@
 #include "reprojection_error.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace vlo::vo::detail
 {
@@ -11,7 +12,7 @@ Mat3 rotationFromParams(const double* p)
 	return a < 1e-12 ? Mat3::Identity() : Eigen::AngleAxisd(a, v / a).toRotationMatrix();
 }
 
-Eigen::Matrix3d rotatedPointJacobian(const Mat3& R, const Vec3& w, const Vec3& X)
+Mat3 rightJacobian(const Vec3& w)
 {
 	const double t = w.norm();
 	const Mat3 W = skew(w);
@@ -20,14 +21,31 @@ Eigen::Matrix3d rotatedPointJacobian(const Mat3& R, const Vec3& w, const Vec3& X
 		Jr += -(1 - std::cos(t)) / (t * t) * W + (t - std::sin(t)) / (t * t * t) * W * W;
 	else
 		Jr += -0.5 * W;
-	return -R * skew(X) * Jr;
+	return Jr;
+}
+
+Eigen::Matrix3d rotatedPointJacobian(const Mat3& R, const Mat3& Jr, const Vec3& X) { return -R * skew(X) * Jr; }
+
+const PoseRotations::Rotation& PoseRotations::at(std::size_t pose, const double* w)
+{
+	Entry& e = entries_[pose];
+	// Bitwise: the same parameters give the same rotation, as computing it again would.
+	if (!e.valid || std::memcmp(e.w, w, sizeof e.w) != 0)
+	{
+		std::memcpy(e.w, w, sizeof e.w);
+		e.valid = true;
+		e.rot.R = rotationFromParams(w);
+		e.rot.Jr = rightJacobian(Vec3(w[0], w[1], w[2]));
+	}
+	return e.rot;
 }
 
 bool ReprojectionError::Evaluate(double const* const* p, double* r, double** J) const
 {
 	const double* pose = p[0];
 	const Vec3 X(p[1][0], p[1][1], p[1][2]);
-	const Mat3 R = rotationFromParams(pose);
+	const PoseRotations::Rotation* shared = rotations_ ? &rotations_->at(pose_, pose) : nullptr;
+	const Mat3 R = shared ? shared->R : rotationFromParams(pose);
 	const Vec3 Xc = R * X + Vec3(pose[3], pose[4], pose[5]);
 	// A point behind the camera (an outlier) still gets a finite residual, as with autodiff: failing
 	// the evaluation would stop the whole solve at its first iteration.
@@ -42,7 +60,8 @@ bool ReprojectionError::Evaluate(double const* const* p, double* r, double** J) 
 	if (J[0])
 	{
 		Eigen::Map<Eigen::Matrix<double, 2, 6, Eigen::RowMajor>> Jpose(J[0]);
-		Jpose.leftCols<3>() = Jp * rotatedPointJacobian(R, Vec3(pose[0], pose[1], pose[2]), X);
+		const Mat3 Jr = shared ? shared->Jr : rightJacobian(Vec3(pose[0], pose[1], pose[2]));
+		Jpose.leftCols<3>() = Jp * rotatedPointJacobian(R, Jr, X);
 		Jpose.rightCols<3>() = Jp;
 	}
 	if (J[1])
@@ -79,5 +98,14 @@ ceres::Solver::Options solverOptions(int iterations, bool schur)
 	o.logging_type = ceres::SILENT;
 	o.minimizer_progress_to_stdout = false;
 	return o;
+}
+
+ceres::Problem::Options problemOptions()
+{
+	ceres::Problem::Options po;
+	po.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+	po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+	po.disable_all_safety_checks = true;  // well-formed blocks; saves hash lookups per residual
+	return po;
 }
 }  // namespace vlo::vo::detail

@@ -6,26 +6,57 @@
 #include <ceres/ceres.h>
 #include <vlo/vo/geometry.h>
 
+#include <vector>
+
 namespace vlo::vo::detail
 {
-/// d(R(w) X)/dw = -R [X]x Jr(w), Jr the right Jacobian of SO(3).
-Eigen::Matrix3d rotatedPointJacobian(const Mat3& R, const Vec3& w, const Vec3& X);
+/// Jr(w), the right Jacobian of SO(3).
+Mat3 rightJacobian(const Vec3& w);
+/// d(R(w) X)/dw = -R [X]x Jr(w).
+Eigen::Matrix3d rotatedPointJacobian(const Mat3& R, const Mat3& Jr, const Vec3& X);
 Mat3 rotationFromParams(const double* p);
+
+/// R(w) and Jr(w) of each pose of a problem at the parameters last asked for, so that the
+/// observations of a pose share them within an evaluation of the problem (a keyframe has hundreds).
+/// One per solve: not for several threads.
+class PoseRotations
+{
+   public:
+	struct Rotation
+	{
+		Mat3 R, Jr;
+	};
+	explicit PoseRotations(std::size_t n_poses) : entries_(n_poses) {}
+	/// The rotation of pose `pose` at angle-axis w[0..3).
+	const Rotation& at(std::size_t pose, const double* w);
+
+   private:
+	struct Entry
+	{
+		double w[3];
+		bool valid = false;
+		Rotation rot;
+	};
+	std::vector<Entry> entries_;
+};
 
 class ReprojectionError : public ceres::SizedCostFunction<2, 6, 3>
 {
    public:
-	ReprojectionError(const Vec2& obs, double inv_sigma, const PinholeCamera& c) : obs_(obs), w_(inv_sigma), c_(c) {}
-	bool Evaluate(double const* const* p, double* r, double** J) const override;
-	static ceres::CostFunction* create(const Vec2& obs, double inv_sigma, const PinholeCamera& c)
+	/// `rotations`: where the pose's rotation is looked up (as pose number `pose`), else computed.
+	ReprojectionError(const Vec2& obs, double inv_sigma, const PinholeCamera& c, PoseRotations* rotations = nullptr,
+		std::size_t pose = 0)
+		: obs_(obs), w_(inv_sigma), c_(c), rotations_(rotations), pose_(pose)
 	{
-		return new ReprojectionError(obs, inv_sigma, c);
 	}
+	bool Evaluate(double const* const* p, double* r, double** J) const override;
 
    private:
 	Vec2 obs_;
 	double w_;
 	PinholeCamera c_;
+	PoseRotations* rotations_;
+	std::size_t pose_;
 };
 
 /// The same with the point held fixed (pose-only optimisation).
@@ -34,10 +65,6 @@ class PoseOnlyError : public ceres::SizedCostFunction<2, 6>
    public:
 	PoseOnlyError(const Vec3& X, const Vec2& obs, double inv_sigma, const PinholeCamera& c) : X_(X), e_(obs, inv_sigma, c) {}
 	bool Evaluate(double const* const* p, double* r, double** J) const override;
-	static ceres::CostFunction* create(const Vec3& X, const Vec2& obs, double inv_sigma, const PinholeCamera& c)
-	{
-		return new PoseOnlyError(X, obs, inv_sigma, c);
-	}
 
    private:
 	Vec3 X_;
@@ -47,4 +74,6 @@ class PoseOnlyError : public ceres::SizedCostFunction<2, 6>
 void toParams(const SE3& T, double* p);
 SE3 fromParams(const double* p);
 ceres::Solver::Options solverOptions(int iterations, bool schur);
+/// For problems whose residuals and loss the caller owns (and keeps until the solve is done).
+ceres::Problem::Options problemOptions();
 }  // namespace vlo::vo::detail

@@ -2,6 +2,8 @@
 #include <ceres/rotation.h>
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "../src/reprojection_error.h"
 #include "synthetic_scene.h"
 
@@ -61,4 +63,30 @@ TEST(Reprojection, AnalyticJacobiansMatchAutodiff)
 	ASSERT_TRUE(pose_only.Evaluate(p1, r1, J1));
 	ASSERT_TRUE(analytic.Evaluate(p2, r2, J2));
 	for (int i = 0; i < 12; ++i) EXPECT_DOUBLE_EQ(j1[i], j2a[i]);
+}
+
+// The rotations shared between the observations of a pose give the very same numbers as computing
+// them per observation, also when the parameters change between evaluations (a new trial step).
+TEST(Reprojection, SharedRotationsGiveIdenticalNumbers)
+{
+	const auto cam = test::kittiCamera();
+	const Vec2 obs(610.25, 180.5);
+	detail::PoseRotations rotations(2);
+	const detail::ReprojectionError own(obs, 0.8, cam);
+	const detail::ReprojectionError shared(obs, 0.8, cam, &rotations, 1);
+	double pose[6] = {0.02, -0.3, 0.01, 0.5, 0.1, -2.0};
+	double X[3] = {-3.0, 1.0, 15.0};
+	const double* params[2] = {pose, X};
+	for (const double step : {0.0, 0.0, 1e-7, -0.25, 0.0})
+	{
+		pose[1] += step;
+		double ra[2], rb[2], ja0[12], ja1[6], jb0[12], jb1[6];
+		double* ja[2] = {ja0, ja1};
+		double* jb[2] = {jb0, jb1};
+		ASSERT_TRUE(own.Evaluate(params, ra, ja));
+		ASSERT_TRUE(shared.Evaluate(params, rb, jb));
+		EXPECT_EQ(0, std::memcmp(ra, rb, sizeof ra)) << "step " << step;
+		EXPECT_EQ(0, std::memcmp(ja0, jb0, sizeof ja0)) << "step " << step;
+		EXPECT_EQ(0, std::memcmp(ja1, jb1, sizeof ja1)) << "step " << step;
+	}
 }

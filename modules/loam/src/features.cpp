@@ -1,5 +1,6 @@
 #include "vlo/loam/features.h"
 
+#include <vlo/loam/rings.h>
 #include <vlo/loam/voxel_hash.h>
 
 #include <algorithm>
@@ -77,6 +78,31 @@ void FeatureExtractor::markUnreliable(const ScanPoint* p, int n)
 		}
 }
 
+// Missing returns (sky, glass, out of range, or something that blocks the beam and returns nothing)
+// leave gaps in azimuth along a ring. A curvature window across a gap sums points far apart, so
+// both borders look like edges (and smooth planes may look bent) that move with whatever hides the
+// world: the border points are no surface sample. Gaps are counted in the ring's median azimuth step.
+void FeatureExtractor::markAzimuthGaps(const ScanPoint* p, int n)
+{
+	step_.resize(n - 1);
+	float az = fastAtan2(p[0].p.y(), p[0].p.x());
+	for (int i = 0; i + 1 < n; ++i)
+	{
+		const float next = fastAtan2(p[i + 1].p.y(), p[i + 1].p.x()), d = std::fabs(next - az);
+		step_[i] = std::min(d, 6.28318531f - d);
+		az = next;
+	}
+	sorted_step_ = step_;
+	const auto mid = sorted_step_.begin() + sorted_step_.size() / 2;
+	std::nth_element(sorted_step_.begin(), mid, sorted_step_.end());
+	const float max_step = static_cast<float>(opt_.max_azimuth_gap) * *mid;
+	const int W = opt_.curvature_half_window;
+	// The window of point i holds the steps i - W .. i + W - 1.
+	for (int j = 0; j + 1 < n; ++j)
+		if (step_[j] > max_step)
+			std::fill(picked_.begin() + std::max(0, j - W + 1), picked_.begin() + std::min(n, j + W + 1), kUnreliable);
+}
+
 // Picked features keep their neighbours from being picked, so features spread over the scan,
 // but not across a gap: the other side of a gap is a different surface.
 void FeatureExtractor::suppressNeighbours(const ScanPoint* p, int n, int i)
@@ -121,6 +147,7 @@ void FeatureExtractor::extractRing(const ScanPoint* p, int n, FeatureSet& out)
 		curv_[i] = d.squaredNorm();
 	}
 	markUnreliable(p, n);
+	if (opt_.max_azimuth_gap > 0) markAzimuthGaps(p, n);
 
 	const float sharp_thr = static_cast<float>(opt_.sharp_threshold);
 	const float flat_thr = static_cast<float>(opt_.flat_threshold);

@@ -89,6 +89,17 @@ int ScanToScanOdometry::closestOnNearbyRings(const Set& s, int ring, const RingS
 	return j;
 }
 
+// Three points always span a plane; the reference point next to the third (on the same ring) must
+// lie on it too, or the three were not on one surface (leaves in a crown, a corner). No such point:
+// nothing to check against.
+bool ScanToScanOdometry::confirmsPlane(int m, const RingSearch::Query& q, const Eigen::Vector3d& n, double d) const
+{
+	if (opt_.plane_max_distance <= 0) return true;
+	float best = max2_;
+	const int k = planes_.rings.nearest(planes_.points[m].ring, q, best, m);
+	return k < 0 || std::abs(n.dot(planes_.points[k].p.cast<double>()) + d) <= opt_.plane_max_distance;
+}
+
 void ScanToScanOdometry::findMatches(const FeatureSet& curr, const Eigen::Isometry3d& T, Matches& out) const
 {
 	out.clear();
@@ -125,6 +136,7 @@ void ScanToScanOdometry::findMatches(const FeatureSet& curr, const Eigen::Isomet
 		const double nn = n.norm();
 		if (nn < 1e-6) continue;
 		n /= nn;
+		if (!confirmsPlane(m, q, n, -n.dot(pj))) continue;
 		out.planes.push_back(PlaneMatch{sp.p.cast<double>(), n, -n.dot(pj)});
 	}
 }

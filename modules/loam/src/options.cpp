@@ -71,6 +71,7 @@ void FeatureOptions::declare(OptionTable& t)
 	t.add("occlusion_angle", occlusion_angle, ">= 0", "... when their beams are closer than this [rad]");
 	t.add("reject_parallel", reject_parallel, "true | false", "drop points on surfaces nearly parallel to the beam");
 	t.add("parallel_ratio", parallel_ratio, ">= 0", "both gaps^2 > ratio * range^2: parallel");
+	t.add("max_azimuth_gap", max_azimuth_gap, ">= 0", "curvature window across missing returns wider than this many of the ring's median azimuth steps: point unreliable (0: off)");
 	t.add("min_rings", min_rings, ">= 1", "fewer populated rings: frame skipped");
 	t.add("min_sharp", min_sharp, ">= 0", "fewer sharp points: frame skipped");
 	t.add("min_flat", min_flat, ">= 0", "fewer flat points: frame skipped");
@@ -89,6 +90,7 @@ void OdometryOptions::declare(OptionTable& t)
 	t.add("nearby_rings", nearby_rings, ">= 1", "rings searched on each side for line/plane points");
 	t.add("use_kdtree", use_kdtree, "true | false", "first neighbour from a kd-tree (A-LOAM) instead of the rings near the query");
 	t.add("min_correspondences", min_correspondences, ">= 6", "fewer: keep the initial guess");
+	t.add("plane_max_distance", plane_max_distance, ">= 0", "plane match: a fourth reference point (next to the third) must lie this close to it [m] (0: no check)");
 	t.add("max_rounds", max_rounds, ">= 1", "rounds continue past outer_iterations while the pose still moves, up to this many");
 }
 

@@ -3,6 +3,8 @@
 #include <vlo/loam/features.h>
 #include <vlo/loam/rings.h>
 
+#include <cmath>
+
 #include "synthetic_world.h"
 #include "test_helpers.h"
 
@@ -138,6 +140,61 @@ TEST(Features, OccludedSideOfADepthJumpIsNeverAnEdge)
 	};
 	EXPECT_EQ(sharpOnWallNearPole(true), 0);
 	EXPECT_GT(sharpOnWallNearPole(false), 0);
+}
+
+namespace
+{
+// One ring on a round wall 10 m away, a return every 0.2 deg, but none in [90, 100) deg: the
+// shadow of something that returns nothing (or the sky). Azimuths [rad] of the last return before
+// the gap and the first after it.
+constexpr float kStep = 0.2f * 3.14159265f / 180.0f;
+constexpr float kGapFirst = 89.8f * 3.14159265f / 180.0f, kGapLast = 100.0f * 3.14159265f / 180.0f;
+RingScan roundWallWithGap()
+{
+	RingScan rs;
+	for (int k = 0; k < 1800; ++k)
+	{
+		const float az = k * kStep;
+		if (az > kGapFirst + 0.5f * kStep && az < kGapLast - 0.5f * kStep) continue;
+		ScanPoint p;
+		p.p = Eigen::Vector3f(10.0f * std::cos(az), 10.0f * std::sin(az), -1.0f);
+		p.time = k / 1800.0f;
+		rs.points.push_back(p);
+	}
+	rs.ring_begin = {0, rs.points.size()};
+	return rs;
+}
+
+// Steps of kStep from the nearest border of the gap, on the side where the point lies.
+float stepsFromGap(const ScanPoint& p)
+{
+	const float az = std::atan2(p.p.y(), p.p.x());
+	return std::min(std::abs(az - kGapFirst), std::abs(az - kGapLast)) / kStep;
+}
+}  // namespace
+
+TEST(Features, PointsBesideMissingReturnsAreNoFeatures)
+{
+	// A window of 5 + 5 neighbours across the 10 deg gap sums points ~1.7 m apart: the borders
+	// look like edges although the wall is smooth (curvature of a uniform 10 m circle: ~5e-5 m^2).
+	FeatureOptions o;
+	o.max_azimuth_gap = 0;
+	FeatureExtractor blind(o);
+	const RingScan rs = roundWallWithGap();
+	const FeatureSet f0 = blind.extract(rs);
+	ASSERT_FALSE(f0.sharp.empty());
+	for (const ScanPoint& p : f0.sharp) EXPECT_LT(stepsFromGap(p), 5.5f);
+
+	o.max_azimuth_gap = 3;
+	FeatureExtractor fx(o);
+	const FeatureSet f = fx.extract(rs);
+	EXPECT_TRUE(f.sharp.empty());
+	EXPECT_TRUE(f.less_sharp.empty());
+	EXPECT_GE(f.flat.size(), 6u * 4u - 2u);
+	// The window of a point W = 5 steps from the border no longer reaches across it.
+	for (const ScanPoint& p : f.flat) EXPECT_GT(stepsFromGap(p), 4.5f);
+	for (const ScanPoint& p : f.less_flat) EXPECT_GT(stepsFromGap(p), 4.5f);
+	for (const ScanPoint& p : f.less_flat) EXPECT_NEAR(p.p.head<2>().norm(), 10.0f, 0.01f);
 }
 
 TEST(Features, Hdl64UrbanScanCounts)

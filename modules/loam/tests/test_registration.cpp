@@ -3,6 +3,7 @@
 #include <vlo/loam/lidar_odometry.h>
 
 #include <cstdio>
+#include <random>
 
 #include "synthetic_world.h"
 #include "test_helpers.h"
@@ -147,4 +148,38 @@ TEST(Registration, CorridorIsFlaggedDegenerate)
 	EXPECT_FALSE(s.mapping.degeneracy.degenerate);
 	EXPECT_GT(s.mapping.degeneracy.min_eigenvalue, 10 * c.mapping.degeneracy.min_eigenvalue);
 }
+TEST(Registration, PlaneMatchesNeedAFourthPointOnThePlane)
+{
+	// Scan-to-scan plane matches at the true motion, against the reference scan as measured and
+	// against the same scan with its plane points scattered +-0.15 m along their beams (leaves in a
+	// crown): three scattered points still span a "plane", a fourth one seldom lies on it.
+	const Pair p = scanPair(false, motion(0.8, 0.05, 0, 1.0, 0, 0), 5);
+	const LoamOptions o = vlp16Options();
+	ScanPreprocessor pre(o.scan);
+	FeatureExtractor fx(o.features);
+	const FeatureSet ref = fx.extract(pre.process(p.a)), curr = fx.extract(pre.process(p.b));
+	FeatureSet leaves = ref;
+	std::mt19937 rng(7);
+	std::uniform_real_distribution<float> depth(-0.15f, 0.15f);
+	for (ScanPoint& q : leaves.less_flat) q.p *= 1.0f + depth(rng) / q.p.norm();
+
+	const auto planes = [&](const FeatureSet& reference, double check) {
+		OdometryOptions oo = o.odometry;
+		oo.plane_max_distance = check;
+		ScanToScanOdometry odo(oo, RingModel(o.scan));
+		odo.setReference(reference);
+		Matches m;
+		odo.findMatches(curr, p.truth, m);
+		return static_cast<double>(m.planes.size());
+	};
+	const double check = o.odometry.plane_max_distance;  // the default
+	const double solid = planes(ref, 0), solid_checked = planes(ref, check);
+	const double crown = planes(leaves, 0), crown_checked = planes(leaves, check);
+	std::printf("plane matches: solid %.0f, checked %.0f; scattered %.0f, checked %.0f\n", solid, solid_checked, crown, crown_checked);
+	ASSERT_GT(solid, 100);
+	EXPECT_GT(crown, 0.9 * solid);  // without the check the leaves match as well as solid surfaces
+	EXPECT_GT(solid_checked, 0.8 * solid);
+	EXPECT_LT(crown_checked, 0.5 * crown);
+}
+
 }  // namespace vlo::loam::test

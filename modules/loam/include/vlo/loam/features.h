@@ -2,7 +2,7 @@
 // LOAM feature extraction: smoothness (curvature) of each point over its neighbours on the same
 // ring; per ring sector, the sharpest points are edge features and the smoothest plane features,
 // spread out by suppressing neighbours, and unreliable points (occlusion boundaries, surfaces
-// grazed by the beam) are never picked.
+// grazed by the beam, optionally windows across missing returns) are never picked.
 #include <vlo/loam/options.h>
 #include <vlo/loam/types.h>
 
@@ -24,6 +24,7 @@ class FeatureExtractor
    private:
 	void extractRing(const ScanPoint* p, int n, FeatureSet& out);
 	void markUnreliable(const ScanPoint* p, int n);
+	void markAzimuthGaps(const ScanPoint* p, int n);
 	void suppressNeighbours(const ScanPoint* p, int n, int i);
 	bool isLocalMax(int i, int n) const;
 
@@ -33,6 +34,7 @@ class FeatureExtractor
 	std::vector<std::uint8_t> picked_;  ///< excluded from further selection (and why)
 	std::vector<std::int8_t> label_;  ///< 2 sharp, 1 less sharp, -1 flat, 0 none
 	std::vector<std::pair<float, int>> order_;  ///< (curvature, index) of one sector
+	std::vector<float> step_, sorted_step_;  ///< azimuth from each point to the next on the ring [rad]
 };
 
 /// Voxel downsampling of a sequence of points along one ring: consecutive points in the same voxel

@@ -61,6 +61,7 @@ class ScanToScanOdometry
 	int queryRing(const FeatureSet& curr, const RingSearch::Query& q) const;
 	int firstNeighbour(const Set& s, const RingSearch::Query& q, int r) const;
 	int closestOnNearbyRings(const Set& s, int ring, const RingSearch::Query& q) const;
+	bool confirmsPlane(int m, const RingSearch::Query& q, const Eigen::Vector3d& n, double d) const;
 
 	OdometryOptions opt_;
 	RingModel model_;

@@ -54,6 +54,7 @@ struct FeatureOptions : public OptionSet
 	double occlusion_angle = 0.1;  ///< ... if their beams are closer than this [rad]
 	bool reject_parallel = true;
 	double parallel_ratio = 0.0002;  ///< gap^2 > ratio * range^2 on both sides: beam grazes a surface
+	double max_azimuth_gap = 0;  ///< a window spanning a gap wider than this many firing steps is unreliable (0: off)
 	int min_rings = 4;  ///< fewer populated rings: the frame is skipped
 	int min_sharp = 10, min_flat = 30;  ///< fewer features: the frame is skipped
 
@@ -83,6 +84,9 @@ struct OdometryOptions : public OptionSet
 	int nearby_rings = 2;  ///< rings searched on each side for the second/third point
 	bool use_kdtree = false;  ///< first neighbour from a kd-tree (A-LOAM) instead of the ring index
 	int min_correspondences = 20;  ///< fewer: keep the initial guess
+	/// A plane match also needs the reference point next to its third one within this of the plane:
+	/// among foliage three points span a "plane" through leaves (0: no check) [m].
+	double plane_max_distance = 0.03;
 	/// Rounds go on past solver.outer_iterations while a round still moves the pose (a guess far
 	/// from the motion: a cold start at speed, a gap), up to this many in all.
 	int max_rounds = 30;

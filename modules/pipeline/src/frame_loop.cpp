@@ -5,7 +5,7 @@
 #include <vlo/pipeline/frame_prefetcher.h>
 #include <vlo/pipeline/stage_worker.h>
 
-#include <exception>
+#include <memory>
 #include <optional>
 
 namespace vlo
@@ -29,30 +29,48 @@ void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions
 	const bool threaded = popt.threadCount() >= 2;
 	FramePrefetcher frames(reader, threaded ? 2 : 0, std::size_t(popt.max_frames));
 
-	// Frame i's motion source, then its LiDAR odometry, each into a table of its own. With two
-	// threads the LiDAR odometry of frame i runs beside the motion source of frame i+1: the motion
-	// source never reads the LiDAR odometry's results (doc/SPEED.md), so the order of each module's
-	// calls, and with it every output, is the same as with one thread.
-	std::optional<FrameInFlight> lidarNext;  // its motion source has run
-	StageWorker worker(threaded);  // after what its jobs use: destroyed, and so waited for, first
-	for (;;)
-	{
-		std::optional<FrameInFlight> cur(std::in_place);
-		if (!frames.next(cur->frame)) cur.reset();
-		if (!cur && !lidarNext) break;
+	// Each frame's motion source, then its LiDAR odometry and its row of the table. With two threads
+	// the LiDAR odometry runs on the worker, up to kAhead frames behind the motion source: the
+	// motion source never reads the LiDAR odometry's results (doc/SPEED.md), so the order of each
+	// module's calls, and with it every output, is the same as with one thread.
+	constexpr std::size_t kAhead = 3;
+	const auto lidarAndRow = [&](const FrameInFlight& done) {
 		FrameTable lidarRow;
 		std::optional<Eigen::Isometry3d> pose;
 		double lidarMs = 0;
-		if (lidarNext && stages.lidar)
-			worker.start([&, f = &*lidarNext] {
-				const auto t0 = SteadyClock::now();
-				pose = stages.lidar->process(f->frame, plan.bootstrapping ? f->motion : std::nullopt, lidarRow);
-				if (popt.map_every > 0 && f->frame.index % popt.map_every == 0)
-					map.insert(f->frame.scan, *pose * f->frame.rig.vehicle_T_lidar);
-				lidarMs = msSince(t0);
-			});
-		std::exception_ptr motionError;  // thrown after the LiDAR odometry's, as in a serial run
-		if (cur && stages.motion)
+		if (stages.lidar)
+		{
+			const auto t0 = SteadyClock::now();
+			pose = stages.lidar->process(done.frame, plan.bootstrapping ? done.motion : std::nullopt, lidarRow);
+			if (popt.map_every > 0 && done.frame.index % popt.map_every == 0)
+				map.insert(done.frame.scan, *pose * done.frame.rig.vehicle_T_lidar);
+			lidarMs = msSince(t0);
+		}
+		auto& table = outputs.table;
+		table.newRow();
+		table.set("frame", static_cast<long long>(done.frame.index));
+		table.set("t", done.frame.t, 6);
+		table.setCells(done.motion_row);
+		if (pose)
+		{
+			if (stages.motion) table.set("vo_metric_motion", done.motion.has_value());
+			table.setCells(lidarRow);
+			outputs.lidar.push_back({done.frame.t, *pose});
+			table.set("x", pose->translation().x(), 3);
+			table.set("y", pose->translation().y(), 3);
+			table.set("z", pose->translation().z(), 3);
+		}
+		table.set("ms_total", done.ms + lidarMs, 2);
+		if (popt.sample_frame_every > 0 && done.frame.index % popt.sample_frame_every == 0)
+			outputs.addSampleFrame(done.frame);
+		progress.update(table.rows(), frames.progress());
+	};
+	StageWorker worker(threaded, kAhead);  // after what its jobs use: destroyed, and so waited for, first
+	for (;;)
+	{
+		auto cur = std::make_shared<FrameInFlight>();
+		if (!frames.next(cur->frame)) break;
+		if (stages.motion)
 		{
 			try
 			{
@@ -63,34 +81,12 @@ void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions
 			}
 			catch (...)
 			{
-				motionError = std::current_exception();
+				worker.wait();  // the frames before fail first, as in a serial run
+				throw;
 			}
 		}
-		if (lidarNext)
-		{
-			worker.wait();
-			FrameInFlight& done = *lidarNext;
-			auto& table = outputs.table;
-			table.newRow();
-			table.set("frame", static_cast<long long>(done.frame.index));
-			table.set("t", done.frame.t, 6);
-			table.setCells(done.motion_row);
-			if (pose)
-			{
-				if (stages.motion) table.set("vo_metric_motion", done.motion.has_value());
-				table.setCells(lidarRow);
-				outputs.lidar.push_back({done.frame.t, *pose});
-				table.set("x", pose->translation().x(), 3);
-				table.set("y", pose->translation().y(), 3);
-				table.set("z", pose->translation().z(), 3);
-			}
-			table.set("ms_total", done.ms + lidarMs, 2);
-			if (popt.sample_frame_every > 0 && done.frame.index % popt.sample_frame_every == 0)
-				outputs.addSampleFrame(done.frame);
-			progress.update(table.rows(), frames.progress());
-		}
-		if (motionError) std::rethrow_exception(motionError);
-		lidarNext = std::move(cur);
+		worker.start([&lidarAndRow, cur] { lidarAndRow(*cur); });
 	}
+	worker.wait();
 }
 }  // namespace vlo

@@ -1,10 +1,11 @@
 #include <vlo/pipeline/stage_worker.h>
 
+#include <algorithm>
 #include <utility>
 
 namespace vlo
 {
-StageWorker::StageWorker(bool threaded)
+StageWorker::StageWorker(bool threaded, std::size_t depth) : depth_(std::max<std::size_t>(depth, 1))
 {
 	if (threaded) thread_ = std::thread([this] { serve(); });
 }
@@ -13,21 +14,26 @@ StageWorker::~StageWorker()
 {
 	{
 		std::unique_lock<std::mutex> lock(mutex_);
-		changed_.wait(lock, [this] { return !busy_; });
+		changed_.wait(lock, [this] { return jobs_.empty(); });
 		quitting_ = true;
 	}
 	changed_.notify_all();
 	if (thread_.joinable()) thread_.join();
 }
 
+void StageWorker::rethrowError()
+{
+	if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
+}
+
 void StageWorker::start(std::function<void()> job)
 {
 	if (!thread_.joinable()) return job();
 	{
-		const std::lock_guard<std::mutex> lock(mutex_);
-		job_ = std::move(job);
-		error_ = nullptr;
-		busy_ = true;
+		std::unique_lock<std::mutex> lock(mutex_);
+		changed_.wait(lock, [this] { return jobs_.size() < depth_ || error_; });
+		rethrowError();
+		jobs_.push_back(std::move(job));
 	}
 	changed_.notify_all();
 }
@@ -35,8 +41,8 @@ void StageWorker::start(std::function<void()> job)
 void StageWorker::wait()
 {
 	std::unique_lock<std::mutex> lock(mutex_);
-	changed_.wait(lock, [this] { return !busy_; });
-	if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
+	changed_.wait(lock, [this] { return jobs_.empty(); });
+	rethrowError();
 }
 
 void StageWorker::serve()
@@ -44,10 +50,9 @@ void StageWorker::serve()
 	std::unique_lock<std::mutex> lock(mutex_);
 	for (;;)
 	{
-		changed_.wait(lock, [this] { return (busy_ && job_) || quitting_; });
-		if (quitting_) return;
-		auto job = std::move(job_);
-		job_ = nullptr;
+		changed_.wait(lock, [this] { return !jobs_.empty() || quitting_; });
+		if (jobs_.empty()) return;
+		auto& job = jobs_.front();
 		lock.unlock();
 		std::exception_ptr error;
 		try
@@ -59,8 +64,8 @@ void StageWorker::serve()
 			error = std::current_exception();
 		}
 		lock.lock();
-		error_ = error;
-		busy_ = false;
+		if (error) error_ = error, jobs_.clear();  // what follows a failed frame must not run
+		else jobs_.pop_front();
 		changed_.notify_all();
 	}
 }

@@ -1,4 +1,4 @@
-// StageWorker: one job at a time beside the caller, its error rethrown where the caller waits.
+// StageWorker: jobs in order beside the caller, an error rethrown where the caller starts or waits.
 #include <gtest/gtest.h>
 #include <vlo/pipeline/stage_worker.h>
 
@@ -71,4 +71,21 @@ TEST(StageWorker, DestroyingItWaitsForTheRunningJob)
 		});
 	}  // e.g. while another stage's exception unwinds: the job's data must outlive it
 	EXPECT_TRUE(finished);
+}
+
+TEST(StageWorker, QueuedJobsRunInOrderAndAFailedOneDropsTheOnesAfterIt)
+{
+	std::vector<int> done;
+	StageWorker worker(true, 3);
+	worker.start([&done] {
+		std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the next two queue meanwhile
+		done.push_back(0);
+	});
+	worker.start([] { throw std::runtime_error("frame 1"); });
+	worker.start([&done] { done.push_back(2); });
+	EXPECT_THROW(worker.wait(), std::runtime_error);
+	EXPECT_EQ(done, std::vector<int>{0});
+	worker.start([&done] { done.push_back(3); });  // the error was reported: it goes on
+	worker.wait();
+	EXPECT_EQ(done, (std::vector<int>{0, 3}));
 }

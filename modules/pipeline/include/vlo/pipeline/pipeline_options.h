@@ -39,8 +39,8 @@ struct PipelineOptions : public OptionSet
 	/// A-LOAM baseline inside a vlo run, for the ablation).
 	bool bootstrapping = true;
 	int scale_snapshot_every = 0;  ///< mode vlo: a scale-corrector snapshot every N frames (0 = none)
-	/// 1: everything on one thread; 2: frames read ahead on a thread, and the LiDAR odometry of frame i
-	/// beside the motion source of frame i+1; auto: 2 when the process may use two cores or more.
+	/// 1: everything on one thread; 2: frames read ahead on a thread, and the LiDAR odometry on another,
+	/// up to 3 frames behind the motion source; auto: 2 when the process may use two cores or more.
 	/// The outputs are the same whatever the count (doc/SPEED.md).
 	std::string threads = "auto";
 

@@ -21,6 +21,7 @@ int main(int argc, char** argv)
 				{"trajectory", "POSES.txt", "drive along KITTI camera-0 poses instead of a generated drive"},
 				{"kitti-dir", "DIR", "also write the KITTI odometry layout (sequence 00) to DIR"},
 				{"lidar-distortion", "", "each LiDAR firing at its own time over the 0.1 s sweep"},
+				{"ideal-deskew", "", "with --lidar-distortion: each return moved to the LiDAR's pose at the frame's time (times 0): the best any deskew gives"},
 				{"camera-distortion", "K1,K2,P1,P2[,K3]", "render through a plumb_bob lens with these coefficients"},
 				{"fisheye", "", "with --camera-distortion K1,K2,K3,K4: an equidistant (fisheye) lens instead"},
 				{"no-noise", "", "no image noise, range noise or dropouts (for checks)"},
@@ -43,6 +44,8 @@ int main(int argc, char** argv)
 		cfg.seed = static_cast<uint64_t>(seed);
 		cfg.kitti_poses = cl.get("trajectory");
 		cfg.lidar_distortion = cl.has("lidar-distortion");
+		cfg.lidar_ideal_deskew = cl.has("ideal-deskew");
+		if (cfg.lidar_ideal_deskew && !cfg.lidar_distortion) vlo::failInput("--ideal-deskew", "needs --lidar-distortion");
 		if (cl.has("fisheye") && !cl.has("camera-distortion")) vlo::failInput("--fisheye", "needs --camera-distortion K1,K2,K3,K4");
 		if (cl.has("camera-distortion"))
 			vlo::sim::setLens(cfg.rig.camera, cl.get("camera-distortion"), cl.has("fisheye"));

@@ -1,25 +1,27 @@
 #!/usr/bin/env bash
 # A rolling LiDAR sweep (vlo-sim --lidar-distortion: each firing at its own time, written with its ring
 # and time): with the sensor's times LOAM deskews every point to the image's instant, so the drive's
-# frame-to-frame error and its KITTI t_err stay near the same drive's without distortion (modes lo and
-# vlo), and far below what they are when the times are ignored (loam.scan.point_times = false).
-# One 40-frame drive's t_err ratio scatters from 0.55 to 1.56, so the test judges the mean ratio
-# (rolling / undistorted) over three seeds, against one bound that the times ignored fail. Measured
-# (mean frame-to-frame / t_err ratio): lo 1.05 / 1.06, vlo 1.04 / 0.88; times ignored 1.96 / 3.9.
+# frame-to-frame error and KITTI t_err stay near those of the same sweep deskewed ideally by the
+# simulator (--ideal-deskew) and of the same drive without distortion (modes lo and vlo), and far above
+# them when the times are ignored (loam.scan.point_times = false). One 40-frame drive's t_err ratio
+# scatters from 0.55 to 1.56, so the test judges mean ratios over three seeds. Measured (mean
+# frame-to-frame / t_err ratio): to the undistorted drive lo 1.01 / 1.04, vlo 0.96 / 1.06; to the
+# ideal deskew lo 1.13 / 1.12, vlo 1.18 / 1.12; times ignored 1.90 / 3.67.
 set -u
 BIN="${VLO_BIN:?}"
 INI="${VLO_SRC:?}/ini"
 . "$VLO_SRC/tests/e2e/lib/common.sh"
 SEEDS="1 2 3"
 BOUND=1.3  # mean ratio rolling / undistorted: below it with the times, above it without
+IDEAL_BOUND=1.3  # mean ratio deskewed by LOAM / deskewed ideally (measured 1.12-1.18 over 40 frames)
 
-# the two drives of one seed, generated side by side
+# the three drives of one seed, generated side by side
 for s in $SEEDS; do
-	for n in plain dist; do
+	for n in plain dist ideal; do
 		"$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames 40 --seed "$s" --out "${n}_$s.rawlog" --quiet \
-			$([ $n = dist ] && echo --lidar-distortion) > /dev/null &
+			$([ $n != plain ] && echo --lidar-distortion) $([ $n = ideal ] && echo --ideal-deskew) > /dev/null &
 	done
-	wait -n && wait -n || fail "seed $s: vlo-sim failed"
+	wait -n && wait -n && wait -n || fail "seed $s: vlo-sim failed"
 done
 rawlog-edit --info -i dist_1.rawlog | grep -Eq "LIDAR +/ +40 " || fail "rawlog-edit does not see 40 scans"
 
@@ -39,17 +41,24 @@ rpe() {
 mean_ratio() { awk '{ s += $2 / $1; n++ } END { if (n) printf "%.3f", s / n }'; }
 
 for mode in lo vlo; do
-	rms_pairs="" terr_pairs=""
+	rms_pairs="" terr_pairs="" ideal_rms_pairs="" ideal_terr_pairs=""
 	for s in $SEEDS; do
 		read -r plain plain_t <<< "$(rpe "plain_${mode}_$s" "$s" "plain_$s.rawlog" $mode)"
 		read -r timed timed_t <<< "$(rpe "dist_${mode}_$s" "$s" "dist_$s.rawlog" $mode)"
-		echo "$mode seed $s: frame-to-frame RMS $plain m, t_err $plain_t % undistorted; $timed m, $timed_t % rolling sweep"
+		read -r ideal ideal_t <<< "$(rpe "ideal_${mode}_$s" "$s" "ideal_$s.rawlog" $mode)"
+		echo "$mode seed $s: frame-to-frame RMS $plain m, t_err $plain_t % undistorted; $timed m, $timed_t % rolling sweep;" \
+			"$ideal m, $ideal_t % deskewed ideally"
 		rms_pairs+="$plain $timed"$'\n' terr_pairs+="$plain_t $timed_t"$'\n'
+		ideal_rms_pairs+="$ideal $timed"$'\n' ideal_terr_pairs+="$ideal_t $timed_t"$'\n'
 	done
 	rms=$(mean_ratio <<< "${rms_pairs%$'\n'}") terr=$(mean_ratio <<< "${terr_pairs%$'\n'}")
 	echo "$mode: mean ratio rolling / undistorted: frame-to-frame $rms, t_err $terr"
 	below "$rms" $BOUND || fail "$mode: mean frame-to-frame ratio $rms above $BOUND"
 	below "$terr" $BOUND || fail "$mode: mean t_err ratio $terr above $BOUND"
+	rms=$(mean_ratio <<< "${ideal_rms_pairs%$'\n'}") terr=$(mean_ratio <<< "${ideal_terr_pairs%$'\n'}")
+	echo "$mode: mean ratio rolling / deskewed ideally: frame-to-frame $rms, t_err $terr"
+	below "$rms" $IDEAL_BOUND || fail "$mode: mean frame-to-frame ratio to the ideal deskew $rms above $IDEAL_BOUND"
+	below "$terr" $IDEAL_BOUND || fail "$mode: mean t_err ratio to the ideal deskew $terr above $IDEAL_BOUND"
 done
 
 # the same check with the times ignored fails it by far: the test sees the deskew

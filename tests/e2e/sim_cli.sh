@@ -21,6 +21,7 @@ expect_error "missing required option '--out'" --frames 2
 expect_error "frames" --frames 0 --out x.rawlog
 expect_error "nope.txt" --trajectory nope.txt --out x.rawlog
 expect_error "foliage-depth: must be between 0 and 10 m" --foliage-depth -1 --out x.rawlog
+expect_error "ideal-deskew: needs --lidar-distortion" --ideal-deskew --out x.rawlog
 if ls x.* x_Images ./*.partial > /dev/null 2>&1; then fail "output left after an error"; fi
 
 # Same seed, same bytes: rawlog, images, ground truth.

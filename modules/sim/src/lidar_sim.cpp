@@ -24,7 +24,8 @@ Eigen::Matrix3d opticalAlong(double yaw)
 double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 }  // namespace
 
-LidarSim::LidarSim(const LidarModel& model, bool distortion) : model_(model), distortion_(distortion)
+LidarSim::LidarSim(const LidarModel& model, bool distortion, bool ideal_deskew)
+	: model_(model), distortion_(distortion), ideal_deskew_(distortion && ideal_deskew)
 {
 	// Square pixels 0.8x the azimuth step at the view centre; tall enough for all beams at the edges.
 	const double step = 2 * M_PI / model_.azimuth_steps, f = 1.0 / (0.8 * step);
@@ -95,6 +96,8 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 		const double fired = firingTime(azimuthOf(c)), tau = distortion_ ? fired : 0.0;
 		if (distortion_) T = views[vi].world_T_cam.inverse() * world_T_lidar(tau);
 		const DepthLookup look(tiles[vi], K_);
+		// An ideal deskew: from the firing's LiDAR frame into the one at the frame's time (tau = 0).
+		const Eigen::Isometry3d to_frame = ideal_deskew_ ? world_T_lidar(0).inverse() * world_T_lidar(tau) : Eigen::Isometry3d::Identity();
 		const Eigen::Isometry3d& W = views[vi].world_T_cam;
 		const Eigen::Isometry3d L = W * T;  // world_T_lidar of this firing
 		const std::vector<Traffic::Placed> movers = moving ? moving->at(fired) : std::vector<Traffic::Placed>{};
@@ -112,11 +115,11 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 			const double noisy = r + noise.range_sigma * rng.normal();
 			if (rng.uniform() < noise.dropout || noisy < model_.min_range || noisy > model_.max_range) continue;
 			if (face >= 0 && !moving->returns) continue;  // after the draws: the other returns keep their noise
-			const Eigen::Vector3d p = noisy * dL;
+			const Eigen::Vector3d p = ideal_deskew_ ? Eigen::Vector3d(to_frame * (noisy * dL)) : Eigen::Vector3d(noisy * dL);
 			// A rolling sweep is written as a Velodyne scan, whose intensity is the sensor's 8-bit reflectivity:
 			// it carries the grey level itself (0-255), so that the rawlog and a KITTI export hold the same value.
 			const float intensity = distortion_ ? float(gray) : float(gray / 255.0);
-			cloud.push_back({float(p.x()), float(p.y()), float(p.z()), intensity, float(tau), ringOf_[j]});
+			cloud.push_back({float(p.x()), float(p.y()), float(p.z()), intensity, ideal_deskew_ ? 0.0f : float(tau), ringOf_[j]});
 		}
 	}
 	return cloud;

@@ -127,7 +127,7 @@ Simulator::Simulator(const SimConfig& cfg) : impl_(std::make_unique<Impl>())
 	vp->setCustomBackgroundColor(mrpt::img::TColorf(0.80f, 0.82f, 0.86f, 1.0f));  // overcast sky
 
 	d.camera = std::make_unique<CameraSim>(cfg.rig.camera);
-	d.lidar = std::make_unique<LidarSim>(cfg.lidar, cfg.lidar_distortion);
+	d.lidar = std::make_unique<LidarSim>(cfg.lidar, cfg.lidar_distortion, cfg.lidar_ideal_deskew);
 	std::vector<std::pair<int, int>> tiles{d.camera->tileSize()};
 	for (int i = 0; i < d.lidar->viewCount(); ++i) tiles.push_back(d.lidar->tileSize());
 	d.renderer = std::make_unique<Renderer>(tiles);

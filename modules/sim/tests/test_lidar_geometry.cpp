@@ -140,3 +140,26 @@ TEST(LidarGeometry, DistortedSweepMatchesThePoseAtEachFiringTime)
 	EXPECT_NEAR(lidar.firingTime(M_PI / 2), -0.025, 1e-12);
 	EXPECT_NEAR(lidar.firingTime(-M_PI / 2), 0.025, 1e-12);
 }
+
+TEST(LidarGeometry, IdealDeskewMovesEachReturnToThePoseAtTheFrameTime)
+{
+	const World w = testWorld();
+	const PointCloud rolling = scan(w, LidarSim(hdl64(), true), 0.0, {0.0, 0.0}, 1);
+	const PointCloud ideal = scan(w, LidarSim(hdl64(), true, true), 0.0, {0.0, 0.0}, 1);
+	ASSERT_EQ(ideal.size(), rolling.size());
+	ASSERT_GT(ideal.size(), 100000u);
+	EXPECT_TRUE(ideal.has_time && ideal.has_ring);
+	double worst = 0, largest_move = 0;
+	for (std::size_t i = 0; i < ideal.size(); ++i)
+	{
+		const auto& r = rolling[i];
+		const Eigen::Vector3d p(r.x, r.y, r.z), q(ideal[i].x, ideal[i].y, ideal[i].z);
+		const Eigen::Vector3d expected = lidarPose(0).inverse() * lidarPose(r.time) * p;
+		worst = std::max(worst, (q - expected).norm());
+		largest_move = std::max(largest_move, (q - p).norm());
+		EXPECT_EQ(ideal[i].time, 0.0f);
+		EXPECT_EQ(ideal[i].ring, r.ring);
+	}
+	EXPECT_LT(worst, 1e-4);  // float coordinates
+	EXPECT_GT(largest_move, 0.5);  // the sweep spans 1.4 m of motion
+}

@@ -50,6 +50,9 @@ struct SimConfig
 	uint64_t seed = 1;
 	double rate_hz = 10;  ///< camera and LiDAR frames per second
 	bool lidar_distortion = false;  ///< each firing at its own time (see doc/SIMULATOR.md)
+	/// With lidar_distortion: each return moved into the LiDAR frame at the frame's time exactly (time
+	/// written as 0): the rolling sweep's sampling without its distortion, what an ideal deskew gives.
+	bool lidar_ideal_deskew = false;
 	double range_noise = 0.02;  ///< m, 1 sigma
 	double image_noise = 2.0;  ///< gray levels, 1 sigma
 	double dropout = 0.005;  ///< probability that a return is lost

@@ -40,7 +40,8 @@ struct MovingObjects
 class LidarSim
 {
    public:
-	LidarSim(const LidarModel& model, bool distortion);
+	/// `ideal_deskew` (with `distortion`): returns moved to the pose at the frame's time, times 0.
+	LidarSim(const LidarModel& model, bool distortion, bool ideal_deskew = false);
 	const LidarModel& model() const { return model_; }
 	int viewCount() const { return static_cast<int>(views_.size()); }
 	std::pair<int, int> tileSize() const { return {K_.width, K_.height}; }
@@ -64,7 +65,7 @@ class LidarSim
 		Eigen::Matrix3d R;  // LiDAR_R_view (optical frame)
 	};
 	LidarModel model_;
-	bool distortion_;
+	bool distortion_, ideal_deskew_;
 	PinholeCamera K_;
 	std::vector<ViewDef> views_;
 	std::vector<Eigen::Vector3d> dirs_;  // per beam (ring-minor), LiDAR frame

@@ -21,10 +21,10 @@ run b vlo 2
 run c vlo 2
 run lo1 lo 1
 run lo2 lo 2
-# The VO's local BA two frames after its keyframe ([vo.mapping] mapping_delay; 1 above): on the mapping
-# thread for two frames of tracking.
-run d1 vlo 1 --set vo.mapping.mapping_delay=2
-run d2 vlo 2 --set vo.mapping.mapping_delay=2
+# The VO's local BA one frame after its keyframe ([vo.mapping] mapping_delay; 2 above, where one thread
+# runs its two passes in two frames): on the mapping thread for one frame of tracking.
+run d1 vlo 1 --set vo.mapping.mapping_delay=1
+run d2 vlo 2 --set vo.mapping.mapping_delay=1
 # same A B FILE...: the files are byte-identical in runs A and B
 same() {
 	local a=$1 b=$2

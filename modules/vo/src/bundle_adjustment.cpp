@@ -49,44 +49,61 @@ BundleProblem snapshotBundle(const BundleWindow& w, const PinholeCamera& cam, co
 	return p;
 }
 
-void solveBundle(BundleProblem& p, int iterations, int refine_iterations, double chi2)
+namespace
+{
+bool isOutlier(const BundleProblem& p, const BundleProblem::Obs& o, double chi2)
+{
+	const auto& X = p.points[o.point];
+	const Vec3 Xc = detail::fromParams(p.poses[o.pose].data()) * Vec3(X[0], X[1], X[2]);
+	if (Xc.z() <= 0) return true;
+	return (project(p.cam, Xc) - o.px).squaredNorm() * o.inv_sigma2 > chi2;
+}
+
+/// One pass: robust over every observation, or plain squares over the current inliers.
+void solvePass(BundleProblem& p, int its, bool robust, double chi2)
+{
+	ceres::HuberLoss huber(std::sqrt(chi2));
+	// The residuals live here, not in the problem: block allocations instead of one per
+	// observation, and no reference counting by the problem (a deque: cost functions cannot move).
+	std::deque<detail::ReprojectionError> residuals;
+	detail::PoseRotations rotations(p.poses.size());
+	ceres::Problem problem(detail::problemOptions());
+	for (const auto& o : p.obs)
+	{
+		if (!robust && isOutlier(p, o, chi2)) continue;
+		problem.AddResidualBlock(&residuals.emplace_back(o.px, o.inv_scale, p.cam, &rotations, o.pose), robust ? &huber : nullptr,
+			p.poses[o.pose].data(), p.points[o.point].data());
+	}
+	if (problem.NumResidualBlocks() == 0) return;
+	int held = 0;
+	for (std::size_t i = p.n_local; i < p.poses.size(); ++i)
+		if (problem.HasParameterBlock(p.poses[i].data())) problem.SetParameterBlockConstant(p.poses[i].data()), ++held;
+	// Monocular gauge: without fixed keyframes, hold one (7th dof, scale, is left to damping).
+	if (p.gauge != p.npos && (p.gauge_always || held == 0) && problem.HasParameterBlock(p.poses[p.gauge].data()))
+		problem.SetParameterBlockConstant(p.poses[p.gauge].data());
+	ceres::Solver::Summary summary;
+	ceres::Solve(detail::solverOptions(its, true), &problem, &summary);
+	if (robust) p.stats.initial_cost = summary.initial_cost;
+	p.stats.final_cost = summary.final_cost;
+}
+}  // namespace
+
+void solveRobust(BundleProblem& p, int iterations, double chi2)
+{
+	if (!p.obs.empty() && iterations > 0) solvePass(p, iterations, true, chi2);
+}
+
+void solveRefine(BundleProblem& p, int refine_iterations, double chi2)
 {
 	if (p.obs.empty()) return;
-	auto isOutlier = [&](const BundleProblem::Obs& o) {
-		const auto& X = p.points[o.point];
-		const Vec3 Xc = detail::fromParams(p.poses[o.pose].data()) * Vec3(X[0], X[1], X[2]);
-		if (Xc.z() <= 0) return true;
-		return (project(p.cam, Xc) - o.px).squaredNorm() * o.inv_sigma2 > chi2;
-	};
-	ceres::HuberLoss huber(std::sqrt(chi2));
-	// One pass: robust over every observation, or plain squares over the current inliers.
-	auto solve = [&](int its, bool robust) {
-		// The residuals live here, not in the problem: block allocations instead of one per
-		// observation, and no reference counting by the problem (a deque: cost functions cannot move).
-		std::deque<detail::ReprojectionError> residuals;
-		detail::PoseRotations rotations(p.poses.size());
-		ceres::Problem problem(detail::problemOptions());
-		for (const auto& o : p.obs)
-		{
-			if (!robust && isOutlier(o)) continue;
-			problem.AddResidualBlock(&residuals.emplace_back(o.px, o.inv_scale, p.cam, &rotations, o.pose), robust ? &huber : nullptr,
-				p.poses[o.pose].data(), p.points[o.point].data());
-		}
-		if (problem.NumResidualBlocks() == 0) return;
-		int held = 0;
-		for (std::size_t i = p.n_local; i < p.poses.size(); ++i)
-			if (problem.HasParameterBlock(p.poses[i].data())) problem.SetParameterBlockConstant(p.poses[i].data()), ++held;
-		// Monocular gauge: without fixed keyframes, hold one (7th dof, scale, is left to damping).
-		if (p.gauge != p.npos && (p.gauge_always || held == 0) && problem.HasParameterBlock(p.poses[p.gauge].data()))
-			problem.SetParameterBlockConstant(p.poses[p.gauge].data());
-		ceres::Solver::Summary summary;
-		ceres::Solve(detail::solverOptions(its, true), &problem, &summary);
-		if (robust) p.stats.initial_cost = summary.initial_cost;
-		p.stats.final_cost = summary.final_cost;
-	};
-	if (iterations > 0) solve(iterations, true);
-	if (refine_iterations > 0) solve(refine_iterations, false);
-	for (auto& o : p.obs) o.outlier = isOutlier(o);
+	if (refine_iterations > 0) solvePass(p, refine_iterations, false, chi2);
+	for (auto& o : p.obs) o.outlier = isOutlier(p, o, chi2);
+}
+
+void solveBundle(BundleProblem& p, int iterations, int refine_iterations, double chi2)
+{
+	solveRobust(p, iterations, chi2);
+	solveRefine(p, refine_iterations, chi2);
 }
 
 BundleStats applyBundle(const BundleWindow& w, const BundleProblem& p, double scale)

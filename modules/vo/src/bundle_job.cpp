@@ -4,11 +4,13 @@ namespace vlo::vo
 {
 BundleJob::BundleJob(const BundleWindow& w, const PinholeCamera& cam, const ScalePyramid& pyr,
 	const BundleSolverSettings& s, long due_frame, bool threaded)
-	: window_(w), problem_(std::make_unique<BundleProblem>(snapshotBundle(w, cam, pyr))), due_(due_frame)
+	: window_(w), problem_(std::make_unique<BundleProblem>(snapshotBundle(w, cam, pyr))), settings_(s), due_(due_frame)
 {
-	BundleProblem* p = problem_.get();
-	solved_ = std::async(threaded ? std::launch::async : std::launch::deferred,
-		[p, s] { solveBundle(*p, s.iterations, s.refine_iterations, s.chi2); });
+	if (threaded)
+		solved_ = std::async(std::launch::async, [this] {
+			runRobust();
+			runRefine();
+		});
 }
 
 BundleJob::~BundleJob()
@@ -16,9 +18,32 @@ BundleJob::~BundleJob()
 	if (solved_.valid()) solved_.wait();
 }
 
+void BundleJob::advance()
+{
+	if (!solved_.valid() && passes_ == 0) runRobust();
+}
+
 BundleStats BundleJob::apply()
 {
-	solved_.get();
+	if (solved_.valid())
+		solved_.get();
+	else
+	{
+		advance();
+		runRefine();
+	}
 	return applyBundle(window_, *problem_, scale_);
+}
+
+void BundleJob::runRobust()
+{
+	solveRobust(*problem_, settings_.iterations, settings_.chi2);
+	++passes_;
+}
+
+void BundleJob::runRefine()
+{
+	solveRefine(*problem_, settings_.refine_iterations, settings_.chi2);
+	++passes_;
 }
 }  // namespace vlo::vo

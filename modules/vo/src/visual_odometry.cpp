@@ -63,7 +63,7 @@ VoFrameInfo VisualOdometry::Impl::process(const cv::Mat& gray, double t)
 	info.ms.add("extract", msSince(t0));
 	info.features = static_cast<int>(current_feat->size());
 	TrackedFrame cur(info.index, t, current_feat);
-	if (mapper && mapper->pending() && mapper->dueFrame() <= info.index) finishMapping(info);
+	if (mapper && mapper->pending()) continueMapping(info);
 
 	t0 = SteadyClock::now();
 	const double mapping_before = info.ms.ms("mapping");
@@ -164,10 +164,16 @@ void VisualOdometry::Impl::insertKeyFrame(TrackedFrame& cur, VoFrameInfo& inf)
 	inf.ms.add("mapping", msSince(t0));
 }
 
-void VisualOdometry::Impl::finishMapping(VoFrameInfo& inf)
+void VisualOdometry::Impl::continueMapping(VoFrameInfo& inf)
 {
 	const auto t0 = SteadyClock::now();
-	addFinished(inf, mapper->finish());
+	if (mapper->dueFrame() <= inf.index)
+		addFinished(inf, mapper->finish());
+	else
+	{
+		mapper->advance();
+		inf.mapping_ms.add("ba", msSince(t0));
+	}
 	inf.ms.add("mapping", msSince(t0));
 }
 

@@ -17,12 +17,13 @@ struct VisualOdometry::Impl
 	VoFrameInfo process(const cv::Mat& gray, double t);
 	bool track(TrackedFrame& cur, VoFrameInfo& info);
 	void insertKeyFrame(TrackedFrame& cur, VoFrameInfo& info);
-	/// Applies the pending local BA of the last keyframe. The last frame keeps its pose: the next
-	/// motion then carries the keyframe's correction, as the keyframe's own motion does when the BA
-	/// runs inline, so the motions add up to the adjusted map (moving the last frame with its
-	/// keyframe, as ORB-SLAM's tracking does, dropped that correction: VO ATE 0.79 instead of 0.39 m on
-	/// the 400-frame urban drive, doc/SPEED.md).
-	void finishMapping(VoFrameInfo& info);
+	/// Applies the pending local BA of the last keyframe when it is due, else runs its robust pass
+	/// (one thread, once). Applied, the last frame keeps its pose: the next motion then carries the
+	/// keyframe's correction, as the keyframe's own motion does when the BA runs inline, so the
+	/// motions add up to the adjusted map (moving the last frame with its keyframe, as ORB-SLAM's
+	/// tracking does, dropped that correction: VO ATE 0.79 instead of 0.39 m on the 400-frame urban
+	/// drive, doc/SPEED.md).
+	void continueMapping(VoFrameInfo& info);
 	void initialise(TrackedFrame& cur, VoFrameInfo& info);
 	void startMap(InitResult& r, TrackedFrame& cur, VoFrameInfo& info);
 	void lose();

@@ -1,6 +1,7 @@
-// Local bundle adjustment off the tracking path (bundle_job.h): solved on a thread it gives exactly
-// the inline result, it recovers known poses, a map scaled while it is pending gets the scaled result,
-// and the VO's outputs are the same with and without the mapping thread.
+// Local bundle adjustment off the tracking path (bundle_job.h): solved on a thread, or split over two
+// frames without one, it gives exactly the inline result, it recovers known poses, a map scaled while
+// it is pending gets the scaled result, and the VO's outputs are the same with and without the mapping
+// thread, the BA entering exactly mapping_delay frames after its keyframe.
 #include <gtest/gtest.h>
 #include <vlo/vo/bundle_job.h>
 #include <vlo/vo/map.h>
@@ -95,6 +96,36 @@ TEST(BundleJob, SolvedOnAThreadEqualsTheInlineAdjustment)
 	expectSameMap(a.map, b.map, 0.0);
 }
 
+TEST(BundleJob, WithoutAThreadTheSolveIsSplitAndGivesTheSameResult)
+{
+	// One thread: the robust pass runs on advance() (the frame after the keyframe's), the refine pass
+	// when the job is applied (the due frame); the map changes only then, as with a thread.
+	const auto cam = test::kittiCamera();
+	SmallWindow a(cam), b(cam), c(cam);
+	bundleAdjust(a.w, cam, ScalePyramid(), kSolver.iterations, kSolver.refine_iterations, kSolver.chi2);
+	BundleJob job(b.w, cam, ScalePyramid(), kSolver, 3, false);
+	EXPECT_EQ(job.passesDone(), 0);
+	job.advance();
+	EXPECT_EQ(job.passesDone(), 1);
+	job.advance();  // once only
+	EXPECT_EQ(job.passesDone(), 1);
+	expectSameMap(b.map, c.map, 0.0);  // nothing entered yet
+	job.apply();
+	EXPECT_EQ(job.passesDone(), 2);
+	expectSameMap(a.map, b.map, 0.0);
+	{
+		SmallWindow d(cam);  // without advance(): all of it when applied
+		BundleJob whole(d.w, cam, ScalePyramid(), kSolver, 3, false);
+		whole.apply();
+		EXPECT_EQ(whole.passesDone(), 2);
+		expectSameMap(a.map, d.map, 0.0);
+	}
+	BundleJob threaded(c.w, cam, ScalePyramid(), kSolver, 3, true);
+	threaded.apply();
+	EXPECT_EQ(threaded.passesDone(), 2);
+	expectSameMap(a.map, c.map, 0.0);
+}
+
 TEST(BundleJob, RecoversTheTruePoses)
 {
 	const auto cam = test::kittiCamera();
@@ -134,7 +165,7 @@ TEST(BundleJob, MapScaledWhilePendingGetsTheScaledResult)
 TEST(BundleJob, VoOutputsAreTheSameWithAMappingThread)
 {
 	const auto cam = test::kittiCamera(0.5);
-	for (int delay : {1, 2})
+	for (int delay : {0, 1, 2})
 	{
 		VoOptions opt;
 		opt.mapping.mapping_delay = delay;
@@ -152,6 +183,12 @@ TEST(BundleJob, VoOutputsAreTheSameWithAMappingThread)
 			}
 			EXPECT_EQ(x.map_points, y.map_points);
 			EXPECT_EQ(x.ba_points, y.ba_points);
+			// Keyframe k's BA enters at frame k + delay, with one thread and with two (the initial
+			// map's keyframe is adjusted by the map's own BA).
+			const VoFrameInfo* k = i >= static_cast<std::size_t>(delay) ? &one.infos[i - static_cast<std::size_t>(delay)] : nullptr;
+			const bool due = k && k->keyframe && !k->new_map;
+			EXPECT_EQ(x.ba_keyframes > 0, due) << "frame " << i << ", delay " << delay;
+			EXPECT_EQ(y.ba_keyframes > 0, due) << "frame " << i << ", delay " << delay;
 			keyframes += x.keyframe;
 			adjusted += x.ba_keyframes > 0;
 		}

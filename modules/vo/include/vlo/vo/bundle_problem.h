@@ -38,8 +38,14 @@ struct BundleProblem
 BundleProblem snapshotBundle(const BundleWindow& w, const PinholeCamera& cam, const ScalePyramid& pyr,
 	const KeyFrame* gauge = nullptr);
 /// `iterations` with a Huber kernel, marks observations with chi2 above the threshold or behind the
-/// camera as outliers, then `refine_iterations` without the kernel over the inliers.
+/// camera as outliers, then `refine_iterations` without the kernel over the inliers: solveRobust()
+/// then solveRefine(), which may run at different times (bundle_job.h) with the same result.
 void solveBundle(BundleProblem& p, int iterations, int refine_iterations, double chi2);
+/// solveBundle's first pass: `iterations` with a Huber kernel over every observation.
+void solveRobust(BundleProblem& p, int iterations, double chi2);
+/// solveBundle's second pass: `refine_iterations` without the kernel over the inliers of the
+/// current solution, then the outliers marked.
+void solveRefine(BundleProblem& p, int refine_iterations, double chi2);
 /// Writes the solution into w's keyframes and points (w as given to snapshotBundle) and erases the
 /// outlier observations from the map. `scale`: the map was scaled by it, about any point, since the
 /// snapshot (relative poses and anchor-frame points scale with it; the anchor's pose is read now).

@@ -32,6 +32,11 @@ class LocalMapper
 	/// A bundle adjustment waits for finish(); no keyframe may be added meanwhile.
 	bool pending() const { return job_ != nullptr; }
 	long dueFrame() const { return job_ ? job_->dueFrame() : -1; }
+	/// Without a mapping thread, at the frame after the keyframe's: the pending BA's robust pass.
+	void advance()
+	{
+		if (job_) job_->advance();
+	}
 	/// The map was scaled by s since the pending bundle adjustment was started.
 	void scalePending(double s)
 	{

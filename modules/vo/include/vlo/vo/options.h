@@ -111,8 +111,9 @@ struct MappingOptions : public OptionSet
 	int ba_refine_iterations = 10;  ///< ... second pass without the outliers
 	int max_ba_keyframes = 20;  ///< optimised keyframes (current + best covisible)
 	/// Keyframe k's local BA (and keyframe culling) enters the map when frame k + this starts; until
-	/// then it runs beside tracking (doc/SPEED.md). 0: inline, at keyframe k.
-	int mapping_delay = 1;
+	/// then it runs beside tracking (doc/SPEED.md). 0: inline, at keyframe k. With one thread its
+	/// robust pass runs at frame k + 1 and its refine pass at k + this (2: one pass per frame).
+	int mapping_delay = 2;
 	int min_covisibility = 15;  ///< shared points for a covisibility edge
 	double redundant_ratio = 0.9;  ///< keyframe culled when this fraction of its points ...
 	int redundant_observers = 3;  ///< ... is seen by this many other keyframes at the same scale

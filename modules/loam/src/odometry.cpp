@@ -136,8 +136,9 @@ void ScanToScanOdometry::findMatches(const FeatureSet& curr, const Eigen::Isomet
 		const double nn = n.norm();
 		if (nn < 1e-6) continue;
 		n /= nn;
-		if (!confirmsPlane(m, q, n, -n.dot(pj))) continue;
-		out.planes.push_back(PlaneMatch{sp.p.cast<double>(), n, -n.dot(pj)});
+		const double d = -n.dot(pj);
+		if (!confirmsPlane(m, q, n, d)) continue;
+		out.planes.push_back(PlaneMatch{sp.p.cast<double>(), n, d});
 	}
 }
 

@@ -87,6 +87,8 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 	cloud.reserve(dirs_.size());
 	cloud.has_time = cloud.has_ring = distortion_;  // a rolling sweep says when and by which beam
 	const int rings = static_cast<int>(model_.elevations_deg.size());
+	// An ideal deskew moves each firing's points into the LiDAR frame at the frame's time (tau = 0).
+	const Eigen::Isometry3d frame_T_world = ideal_deskew_ ? Eigen::Isometry3d(world_T_lidar(0).inverse()) : Eigen::Isometry3d::Identity();
 	for (int c = 0; c < model_.azimuth_steps; ++c)
 	{
 		const int vi = viewOf_[c];
@@ -94,10 +96,10 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 		Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 		T.linear() = views_[vi].R.transpose();
 		const double fired = firingTime(azimuthOf(c)), tau = distortion_ ? fired : 0.0;
-		if (distortion_) T = views[vi].world_T_cam.inverse() * world_T_lidar(tau);
+		const Eigen::Isometry3d fired_pose = distortion_ ? world_T_lidar(tau) : Eigen::Isometry3d::Identity();
+		if (distortion_) T = views[vi].world_T_cam.inverse() * fired_pose;
 		const DepthLookup look(tiles[vi], K_);
-		// An ideal deskew: from the firing's LiDAR frame into the one at the frame's time (tau = 0).
-		const Eigen::Isometry3d to_frame = ideal_deskew_ ? world_T_lidar(0).inverse() * world_T_lidar(tau) : Eigen::Isometry3d::Identity();
+		const Eigen::Isometry3d to_frame = frame_T_world * fired_pose;
 		const Eigen::Isometry3d& W = views[vi].world_T_cam;
 		const Eigen::Isometry3d L = W * T;  // world_T_lidar of this firing
 		const std::vector<Traffic::Placed> movers = moving ? moving->at(fired) : std::vector<Traffic::Placed>{};

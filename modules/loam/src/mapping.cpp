@@ -20,7 +20,7 @@ ScanToMap::ScanToMap(const MappingOptions& o)
 ScanToMap::Input ScanToMap::prepare(const FeatureSet& f) const
 {
 	Input in;
-	in.edges = voxelDownsample(f.less_sharp, static_cast<float>(opt_.edge_leaf));
+	if (opt_.use_edges) in.edges = voxelDownsample(f.less_sharp, static_cast<float>(opt_.edge_leaf));
 	in.planes = voxelDownsample(f.less_flat, static_cast<float>(opt_.plane_leaf));
 	return in;
 }
@@ -55,7 +55,7 @@ bool lineLike(const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& es, double r
 // from another ring); on dense sensors they nearly always do.
 bool ScanToMap::fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMatch& out) const
 {
-	constexpr int kWide = 16;
+	constexpr int kWide = 16;  // >= knn (options)
 	const int k = opt_.knn;
 	const float max_d = static_cast<float>(opt_.max_nn_distance);
 	std::uint32_t tag[32];
@@ -183,11 +183,15 @@ void ScanToMap::insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr,
 	const Eigen::Vector3f t = T_map_curr.translation().cast<float>();
 	const float radius = static_cast<float>(opt_.map_radius);
 	// Edges: centroids at the map's resolution (a third of the points, noise averaged).
-	std::vector<Eigen::Vector3f> w = voxelDownsample(f.less_sharp, static_cast<float>(opt_.map_edge_resolution));
-	for (Eigen::Vector3f& p : w) p = R * p + t;
-	w.erase(std::remove_if(w.begin(), w.end(), [&](const Eigen::Vector3f& p) { return near_arrivals.near(p); }), w.end());
-	edge_map_.insert(w);
-	edge_map_.removeFar(t, radius);
+	std::vector<Eigen::Vector3f> w;
+	if (opt_.use_edges)
+	{
+		w = voxelDownsample(f.less_sharp, static_cast<float>(opt_.map_edge_resolution));
+		for (Eigen::Vector3f& p : w) p = R * p + t;
+		w.erase(std::remove_if(w.begin(), w.end(), [&](const Eigen::Vector3f& p) { return near_arrivals.near(p); }), w.end());
+		edge_map_.insert(w);
+		edge_map_.removeFar(t, radius);
+	}
 	// Planes: merged along each ring, so every point keeps its scan line (frame, ring) as a tag.
 	ScanPoints merged;
 	{

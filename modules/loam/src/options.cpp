@@ -103,6 +103,7 @@ void MappingOptions::declare(OptionTable& t)
 {
 	t.add("enabled", enabled, "true | false", "scan-to-map refinement every frame");
 	declareSolver(t, solver);
+	t.add("use_edges", use_edges, "true | false", "edge points matched to lines of the map (false: planes only, no edge map)");
 	t.add("edge_leaf", edge_leaf, "> 0", "downsampling of the scan's edge points [m]");
 	t.add("plane_leaf", plane_leaf, "> 0", "downsampling of the scan's plane points [m]");
 	t.add("map_edge_resolution", map_edge_resolution, "> 0", "edge map: one point per cell [m]");
@@ -110,7 +111,7 @@ void MappingOptions::declare(OptionTable& t)
 	t.add("voxel_size", voxel_size, "> 0", "hash voxel edge, >= 2*max_nn_distance [m]");
 	t.add("max_points_per_voxel", max_points_per_voxel, ">= 1", "cap on map points per voxel");
 	t.add("map_radius", map_radius, "> 0", "voxels farther from the vehicle are dropped [m]");
-	t.add("knn", knn, "[3, 32]", "neighbours for the line/plane fits");
+	t.add("knn", knn, "[3, 16]", "neighbours for the line/plane fits");
 	t.add("max_nn_distance", max_nn_distance, "> 0", "all neighbours must be this close [m]");
 	t.add("edge_eigen_ratio", edge_eigen_ratio, ">= 1", "line if largest eigenvalue > ratio * middle");
 	t.add("plane_max_distance", plane_max_distance, "> 0", "plane if all neighbours are this close to it [m]");
@@ -133,6 +134,7 @@ void MappingOptions::checkRelations() const
 	require(voxel_size / map_edge_resolution <= 64 && voxel_size / map_plane_resolution <= 64, "voxel_size",
 		"must be at most 64 map resolution cells");
 	require(max_points_per_voxel >= knn, "max_points_per_voxel", "must be >= knn");
+	require(use_edges || min_edge_correspondences == 0, "min_edge_correspondences", "must be 0 when use_edges is false");
 	require(map_radius > voxel_size, "map_radius", "must exceed voxel_size");
 }
 

@@ -18,6 +18,8 @@ struct DriveStats
 	double final_trans_err = 0, max_trans_err = 0, max_rot_err_deg = 0, length = 0;
 	double mean_ms = 0, max_ms = 0;
 	int not_ok = 0;
+	std::size_t map_edge_points = 0;  ///< the most the edge map held
+	int mapping_edges = 0;  ///< the most edge matches of one frame's scan-to-map
 };
 
 // `moving`: each sweep is measured while the sensor moves from the previous frame's pose to this
@@ -52,6 +54,8 @@ DriveStats drive(const LidarModel& lidar, const LoamOptions& opt, const Path& pa
 		st.final_trans_err = et;
 		if (i > 0) st.mean_ms += r.ms.total() / (frames - 1), st.max_ms = std::max(st.max_ms, r.ms.total());
 		if (r.status != FrameStatus::Ok && i > 0) ++st.not_ok;
+		st.map_edge_points = std::max(st.map_edge_points, r.map_edge_points);
+		st.mapping_edges = std::max(st.mapping_edges, r.mapping.n_edges);
 		if (verbose)
 			std::printf("%3d %-12s et %.3f er %.3f (rpy %.3f %.3f %.3f) | pts %zu sharp %zu flat %zu lf %zu | odo %d/%d it %d rms %.3f | map "
 						"%d/%d it %d rms %.3f mineig %.0f | ms feat %.1f odo %.1f map %.1f tot %.1f | "
@@ -98,6 +102,24 @@ DriveStats urbanDrive(const char* name, LidarModel m, const LoamOptions& o, unsi
 }  // namespace
 
 TEST(Drive, Hdl64Urban) { expectTracked(urbanDrive("HDL-64", hdl64(), hdl64Options(), 7), 0.05, 0.1); }
+
+// `[loam.mapping] use_edges`: scan-to-map with edges and planes (A-LOAM), or planes alone and no edge map.
+TEST(Drive, Hdl64UrbanWithAndWithoutEdgesInScanToMap)
+{
+	for (const bool edges : {true, false})
+	{
+		LoamOptions o = hdl64Options();
+		o.mapping.use_edges = edges;
+		const DriveStats st = urbanDrive(edges ? "HDL-64 edges and planes" : "HDL-64 planes only", hdl64(), o, 7);
+		expectTracked(st, 0.05, 0.1);
+		EXPECT_EQ(st.mapping_edges > 20, edges);
+		EXPECT_EQ(st.map_edge_points > 1000, edges);
+		if (!edges)
+		{
+			EXPECT_EQ(st.mapping_edges + st.map_edge_points, 0u);
+		}
+	}
+}
 
 TEST(Drive, Vlp16Urban) { expectTracked(urbanDrive("VLP-16", vlp16(), vlp16Options(), 11), 0.1, 0.2); }
 

@@ -85,6 +85,11 @@ TEST(Options, BadValuesNameSectionAndKey)
 	EXPECT_NE(errorOf("[loam.odometry]\nmax_rounds = many\n").find("max_rounds"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.mapping]\nloss = tukey\n").find("[loam.mapping] loss"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.mapping]\nvoxel_size = 1.0\n").find("voxel_size"), std::string::npos);
+	EXPECT_NE(errorOf("[loam.mapping]\nknn = 17\n").find("[loam.mapping] knn"), std::string::npos);  // plane fits widen to 16
+	EXPECT_EQ(errorOf("[loam.mapping]\nknn = 16\n"), "");
+	EXPECT_NE(errorOf("[loam.mapping]\nuse_edges = false\nmin_edge_correspondences = 10\n").find("min_edge_correspondences"),
+		std::string::npos);
+	EXPECT_EQ(errorOf("[loam.mapping]\nuse_edges = false\n"), "");
 	EXPECT_NE(errorOf("[loam.scan]\nmax_range = 1\n").find("max_range"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.prior]\nsource = imu\n").find("source"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.scan]\nelevation_table_deg = [1 x 3]\n").find("elevation_table_deg"), std::string::npos);

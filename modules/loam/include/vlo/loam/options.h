@@ -104,6 +104,7 @@ struct MappingOptions : public OptionSet
 
 	bool enabled = true;
 	SolverOptions solver;
+	bool use_edges = true;  ///< edge points matched to lines of the map (A-LOAM); false: planes only
 	double edge_leaf = 0.4, plane_leaf = 0.8;  ///< downsampling of the scan's features [m]
 	double map_edge_resolution = 0.2, map_plane_resolution = 0.4;  ///< one map point per cell [m]
 	double voxel_size = 2.0;  ///< hash voxel edge; >= 2 * max_nn_distance keeps the search exact [m]

@@ -20,7 +20,7 @@ ScanToMap::ScanToMap(const MappingOptions& o)
 ScanToMap::Input ScanToMap::prepare(const FeatureSet& f) const
 {
 	Input in;
-	if (opt_.use_edges) in.edges = voxelDownsample(f.less_sharp, static_cast<float>(opt_.edge_leaf));
+	if (opt_.edges != "off") in.edges = voxelDownsample(f.less_sharp, static_cast<float>(opt_.edge_leaf));
 	in.planes = voxelDownsample(f.less_flat, static_cast<float>(opt_.plane_leaf));
 	return in;
 }
@@ -92,7 +92,7 @@ bool ScanToMap::fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMat
 	return true;
 }
 
-void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const
+void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, bool with_edges, Matches& out) const
 {
 	out.clear();
 	const Eigen::Matrix3f R = T.linear().cast<float>();
@@ -101,7 +101,8 @@ void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, Matches
 	Eigen::Vector3f nn[32];
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
 	Eigen::Vector3d c;
-	for (const Eigen::Vector3f& p : in.edges)
+	const std::vector<Eigen::Vector3f> none;
+	for (const Eigen::Vector3f& p : with_edges ? in.edges : none)
 	{
 		if (edge_map_.knn(R * p + t, k, static_cast<float>(opt_.max_nn_distance), nn) < k) continue;
 		fit(nn, k, c, es);
@@ -117,14 +118,33 @@ void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, Matches
 		}
 }
 
+bool ScanToMap::planesLeaveTranslationWeak(const Matches& m, const Eigen::Isometry3d& T) const
+{
+	Matches planes;
+	planes.planes = m.planes;
+	Eigen::Matrix<double, 6, 6> JtJ;
+	double rms;
+	evaluateMatches(planes, opt_.solver, T, JtJ, rms);
+	return analyseDegeneracy(JtJ, 0).translation_information(0) < opt_.edges_below_plane_information;
+}
+
 bool ScanToMap::refine(const Input& in, Result& res) const
 {
 	Matches m;
 	Eigen::Isometry3d T = res.T_map_curr;
 	SolveReport rep;
+	// auto: decided once per frame, from the planes matched at the guess.
+	bool with_edges = opt_.edges == "on";
+	if (opt_.edges == "auto")
+	{
+		findMatches(in, T, false, m);
+		with_edges = planesLeaveTranslationWeak(m, T);
+	}
+	res.used_edges = with_edges;
 	for (int round = 0; round < opt_.solver.outer_iterations; ++round)
 	{
-		findMatches(in, T, m);
+		// auto without lines: the first round has its plane matches from the decision above.
+		if (round > 0 || with_edges || opt_.edges != "auto") findMatches(in, T, with_edges, m);
 		res.n_edges = static_cast<int>(m.edges.size());
 		res.n_planes = static_cast<int>(m.planes.size());
 		if (res.n_planes < opt_.min_plane_correspondences || res.n_edges < opt_.min_edge_correspondences)
@@ -184,7 +204,7 @@ void ScanToMap::insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr,
 	const float radius = static_cast<float>(opt_.map_radius);
 	// Edges: centroids at the map's resolution (a third of the points, noise averaged).
 	std::vector<Eigen::Vector3f> w;
-	if (opt_.use_edges)
+	if (opt_.edges != "off")
 	{
 		w = voxelDownsample(f.less_sharp, static_cast<float>(opt_.map_edge_resolution));
 		for (Eigen::Vector3f& p : w) p = R * p + t;

@@ -103,7 +103,8 @@ void MappingOptions::declare(OptionTable& t)
 {
 	t.add("enabled", enabled, "true | false", "scan-to-map refinement every frame");
 	declareSolver(t, solver);
-	t.add("use_edges", use_edges, "true | false", "edge points matched to lines of the map (false: planes only, no edge map)");
+	t.add("edges", edges, "on | off | auto", "edge points matched to lines of the map: on, off (planes only, no edge map), auto (where planes leave the translation weak)");
+	t.add("edges_below_plane_information", edges_below_plane_information, ">= 0", "auto: edges when the planes' translation information is below this");
 	t.add("edge_leaf", edge_leaf, "> 0", "downsampling of the scan's edge points [m]");
 	t.add("plane_leaf", plane_leaf, "> 0", "downsampling of the scan's plane points [m]");
 	t.add("map_edge_resolution", map_edge_resolution, "> 0", "edge map: one point per cell [m]");
@@ -134,7 +135,7 @@ void MappingOptions::checkRelations() const
 	require(voxel_size / map_edge_resolution <= 64 && voxel_size / map_plane_resolution <= 64, "voxel_size",
 		"must be at most 64 map resolution cells");
 	require(max_points_per_voxel >= knn, "max_points_per_voxel", "must be >= knn");
-	require(use_edges || min_edge_correspondences == 0, "min_edge_correspondences", "must be 0 when use_edges is false");
+	require(edges == "on" || min_edge_correspondences == 0, "min_edge_correspondences", "must be 0 unless edges is on");
 	require(map_radius > voxel_size, "map_radius", "must exceed voxel_size");
 }
 

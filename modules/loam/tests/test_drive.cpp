@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "synthetic_world.h"
 #include "test_helpers.h"
@@ -103,20 +104,22 @@ DriveStats urbanDrive(const char* name, LidarModel m, const LoamOptions& o, unsi
 
 TEST(Drive, Hdl64Urban) { expectTracked(urbanDrive("HDL-64", hdl64(), hdl64Options(), 7), 0.05, 0.1); }
 
-// `[loam.mapping] use_edges`: scan-to-map with edges and planes (A-LOAM), or planes alone and no edge map.
+// `[loam.mapping] edges`: scan-to-map with edges and planes (A-LOAM, on), planes alone and no edge map
+// (off), or edges only where the planes leave the translation weak (auto: never in this street).
 TEST(Drive, Hdl64UrbanWithAndWithoutEdgesInScanToMap)
 {
-	for (const bool edges : {true, false})
+	for (const char* edges : {"on", "off", "auto"})
 	{
 		LoamOptions o = hdl64Options();
-		o.mapping.use_edges = edges;
-		const DriveStats st = urbanDrive(edges ? "HDL-64 edges and planes" : "HDL-64 planes only", hdl64(), o, 7);
+		o.mapping.edges = edges;
+		const DriveStats st = urbanDrive((std::string("HDL-64 edges ") + edges).c_str(), hdl64(), o, 7);
 		expectTracked(st, 0.05, 0.1);
-		EXPECT_EQ(st.mapping_edges > 20, edges);
-		EXPECT_EQ(st.map_edge_points > 1000, edges);
-		if (!edges)
+		const std::string e = edges;
+		EXPECT_EQ(st.mapping_edges > 20, e == "on");
+		EXPECT_EQ(st.map_edge_points > 1000, e != "off");
+		if (e != "on")
 		{
-			EXPECT_EQ(st.mapping_edges + st.map_edge_points, 0u);
+			EXPECT_EQ(st.mapping_edges, 0);
 		}
 	}
 }

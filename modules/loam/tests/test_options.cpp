@@ -87,9 +87,10 @@ TEST(Options, BadValuesNameSectionAndKey)
 	EXPECT_NE(errorOf("[loam.mapping]\nvoxel_size = 1.0\n").find("voxel_size"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.mapping]\nknn = 17\n").find("[loam.mapping] knn"), std::string::npos);  // plane fits widen to 16
 	EXPECT_EQ(errorOf("[loam.mapping]\nknn = 16\n"), "");
-	EXPECT_NE(errorOf("[loam.mapping]\nuse_edges = false\nmin_edge_correspondences = 10\n").find("min_edge_correspondences"),
+	EXPECT_NE(errorOf("[loam.mapping]\nedges = auto\nmin_edge_correspondences = 10\n").find("min_edge_correspondences"),
 		std::string::npos);
-	EXPECT_EQ(errorOf("[loam.mapping]\nuse_edges = false\n"), "");
+	EXPECT_EQ(errorOf("[loam.mapping]\nedges = on\nmin_edge_correspondences = 10\n"), "");
+	EXPECT_NE(errorOf("[loam.mapping]\nedges = sometimes\n").find("[loam.mapping] edges"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.scan]\nmax_range = 1\n").find("max_range"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.prior]\nsource = imu\n").find("source"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.scan]\nelevation_table_deg = [1 x 3]\n").find("elevation_table_deg"), std::string::npos);

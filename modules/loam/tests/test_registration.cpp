@@ -133,7 +133,9 @@ TEST(Registration, CorridorIsFlaggedDegenerate)
 		return urbanWorld(p, 3);
 	}();
 	const auto run = [](const World& w) {
-		LidarOdometry lo(hdl64Options());
+		LoamOptions o = hdl64Options();
+		o.mapping.edges = "auto";
+		LidarOdometry lo(o);
 		Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 		T.translation() = Eigen::Vector3d(20, 0.3, 1.73);
 		lo.process(0.0, scan(w, hdl64(), T), std::nullopt);
@@ -147,6 +149,9 @@ TEST(Registration, CorridorIsFlaggedDegenerate)
 	EXPECT_GT(std::abs(c.mapping.degeneracy.weakest(3)), 0.9);  // along the corridor (x)
 	EXPECT_FALSE(s.mapping.degeneracy.degenerate);
 	EXPECT_GT(s.mapping.degeneracy.min_eigenvalue, 10 * c.mapping.degeneracy.min_eigenvalue);
+	// edges = auto: lines are sought where the planes leave the translation weak, and only there.
+	EXPECT_TRUE(c.mapping.used_edges);
+	EXPECT_FALSE(s.mapping.used_edges);
 }
 TEST(Registration, PlaneMatchesNeedAFourthPointOnThePlane)
 {

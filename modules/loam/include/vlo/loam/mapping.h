@@ -32,6 +32,7 @@ class ScanToMap
 		int rounds = 0;  ///< correspondence + solve rounds run
 		int iterations = 0;
 		int n_edges = 0, n_planes = 0;  ///< matches of the last round
+		bool used_edges = false;  ///< edge matches were sought (edges = on, or auto and the planes are weak)
 		double rms = 0;  ///< distance RMS at the solution [m]
 		Degeneracy degeneracy;
 		std::vector<Eigen::Vector3f> arrived;  ///< points in the previous scan's free space, not matched (map frame)
@@ -55,7 +56,9 @@ class ScanToMap
 	const VoxelMap& planeMap() const { return plane_map_; }
 
 	/// One round's matches for `in` at pose T.
-	void findMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
+	void findMatches(const Input& in, const Eigen::Isometry3d& T, bool with_edges, Matches& out) const;
+	/// edges = auto: whether the plane matches alone constrain the translation too weakly.
+	bool planesLeaveTranslationWeak(const Matches& m, const Eigen::Isometry3d& T) const;
 
    private:
 	/// Correspondence + solve rounds from res.T_map_curr until converged; false (res.reason set)

@@ -104,7 +104,13 @@ struct MappingOptions : public OptionSet
 
 	bool enabled = true;
 	SolverOptions solver;
-	bool use_edges = true;  ///< edge points matched to lines of the map (A-LOAM); false: planes only
+	/// Edge points matched to lines of the map: "on" (A-LOAM), "off" (planes only, no edge map), or
+	/// "auto": only in frames where the planes alone leave the translation weak (a corridor, trees),
+	/// since lines bias the pose where planes suffice (curbs: pitch; vehicles: the step; doc/LOAM.md).
+	std::string edges = "on";
+	/// auto: planes leave the translation weak when its information along the weakest direction
+	/// (J^T J of the plane matches with the rotation marginalised, as [loam.prior]) is below this.
+	double edges_below_plane_information = 30;
 	double edge_leaf = 0.4, plane_leaf = 0.8;  ///< downsampling of the scan's features [m]
 	double map_edge_resolution = 0.2, map_plane_resolution = 0.4;  ///< one map point per cell [m]
 	double voxel_size = 2.0;  ///< hash voxel edge; >= 2 * max_nn_distance keeps the search exact [m]

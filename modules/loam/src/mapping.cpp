@@ -92,23 +92,30 @@ bool ScanToMap::fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMat
 	return true;
 }
 
-void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, bool with_edges, Matches& out) const
+void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const
 {
-	out.clear();
 	const Eigen::Matrix3f R = T.linear().cast<float>();
 	const Eigen::Vector3f t = T.translation().cast<float>();
 	const int k = opt_.knn;
 	Eigen::Vector3f nn[32];
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
 	Eigen::Vector3d c;
-	const std::vector<Eigen::Vector3f> none;
-	for (const Eigen::Vector3f& p : with_edges ? in.edges : none)
+	for (const Eigen::Vector3f& p : in.edges)
 	{
 		if (edge_map_.knn(R * p + t, k, static_cast<float>(opt_.max_nn_distance), nn) < k) continue;
 		fit(nn, k, c, es);
 		if (!lineLike(es, opt_.edge_eigen_ratio)) continue;
 		out.edges.push_back(EdgeMatch{p.cast<double>(), c, es.eigenvectors().col(2)});
 	}
+}
+
+void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, bool with_edges, Matches& out) const
+{
+	out.clear();
+	if (with_edges) findEdgeMatches(in, T, out);
+	const Eigen::Matrix3f R = T.linear().cast<float>();
+	const Eigen::Vector3f t = T.translation().cast<float>();
+	Eigen::Vector3f nn[32];
 	PlaneMatch pm;
 	for (const Eigen::Vector3f& p : in.planes)
 		if (fitPlane(R * p + t, nn, pm))
@@ -120,11 +127,9 @@ void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, bool wi
 
 bool ScanToMap::planesLeaveTranslationWeak(const Matches& m, const Eigen::Isometry3d& T) const
 {
-	Matches planes;
-	planes.planes = m.planes;
 	Eigen::Matrix<double, 6, 6> JtJ;
 	double rms;
-	evaluateMatches(planes, opt_.solver, T, JtJ, rms);
+	evaluateMatches(m, opt_.solver, T, JtJ, rms);
 	return analyseDegeneracy(JtJ, 0).translation_information(0) < opt_.edges_below_plane_information;
 }
 
@@ -133,18 +138,19 @@ bool ScanToMap::refine(const Input& in, Result& res) const
 	Matches m;
 	Eigen::Isometry3d T = res.T_map_curr;
 	SolveReport rep;
-	// auto: decided once per frame, from the planes matched at the guess.
+	// auto: decided once per frame, from the planes matched at the guess (round 0's matches).
+	const bool automatic = opt_.edges == "auto";
 	bool with_edges = opt_.edges == "on";
-	if (opt_.edges == "auto")
+	if (automatic)
 	{
 		findMatches(in, T, false, m);
 		with_edges = planesLeaveTranslationWeak(m, T);
+		if (with_edges) findEdgeMatches(in, T, m);
 	}
 	res.used_edges = with_edges;
 	for (int round = 0; round < opt_.solver.outer_iterations; ++round)
 	{
-		// auto without lines: the first round has its plane matches from the decision above.
-		if (round > 0 || with_edges || opt_.edges != "auto") findMatches(in, T, with_edges, m);
+		if (round > 0 || !automatic) findMatches(in, T, with_edges, m);
 		res.n_edges = static_cast<int>(m.edges.size());
 		res.n_planes = static_cast<int>(m.planes.size());
 		if (res.n_planes < opt_.min_plane_correspondences || res.n_edges < opt_.min_edge_correspondences)

@@ -57,7 +57,9 @@ class ScanToMap
 
 	/// One round's matches for `in` at pose T.
 	void findMatches(const Input& in, const Eigen::Isometry3d& T, bool with_edges, Matches& out) const;
-	/// edges = auto: whether the plane matches alone constrain the translation too weakly.
+	/// Appends the line matches of `in` at pose T to out.edges.
+	void findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
+	/// edges = auto: whether plane matches (m holds no line matches) constrain the translation too weakly.
 	bool planesLeaveTranslationWeak(const Matches& m, const Eigen::Isometry3d& T) const;
 
    private:

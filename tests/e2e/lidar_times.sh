@@ -3,30 +3,32 @@
 # and time): with the sensor's times LOAM deskews every point to the image's instant, so the drive's
 # frame-to-frame error and KITTI t_err stay near those of the same sweep deskewed ideally by the
 # simulator (--ideal-deskew) and of the same drive without distortion (modes lo and vlo), and far above
-# them when the times are ignored (loam.scan.point_times = false). One 40-frame drive's t_err ratio
-# scatters from 0.55 to 1.56, so the test judges mean ratios over three seeds. Measured (mean
-# frame-to-frame / t_err ratio): to the undistorted drive lo 1.01 / 1.04, vlo 0.96 / 1.06; to the
-# ideal deskew lo 1.13 / 1.12, vlo 1.18 / 1.12; times ignored 1.90 / 3.67.
+# them when the times are ignored (loam.scan.point_times = false). A 100-frame drive's t_err is ~1 mm per
+# 10 m and scatters by +-20 %, so the test judges the ratio of the means over three seeds. Measured
+# (frame-to-frame / t_err): to the undistorted drive lo 1.055 / 1.043, vlo 1.242 / 1.100; to the ideal
+# deskew lo 1.085 / 1.067, vlo 1.281 / 1.125 (vlo seed 1: one frame where the VO's guess went straight
+# to scan-to-map, 1 cm off, doc/RESULTS.md "A rolling LiDAR sweep"); times ignored 5.0 / 16.1.
 set -u
 BIN="${VLO_BIN:?}"
 INI="${VLO_SRC:?}/ini"
 . "$VLO_SRC/tests/e2e/lib/common.sh"
 SEEDS="1 2 3"
+FRAMES=100  # ~120 m: at 40 frames t_err (~1 mm per 10 m) is mostly noise
 BOUND=1.3  # mean ratio rolling / undistorted: below it with the times, above it without
-IDEAL_BOUND=1.3  # mean ratio deskewed by LOAM / deskewed ideally (measured 1.12-1.18 over 40 frames)
+IDEAL_BOUND=1.3  # mean ratio deskewed by LOAM / deskewed ideally
 
 # the three drives of one seed, generated side by side
 for s in $SEEDS; do
 	for n in plain dist ideal; do
-		"$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames 40 --seed "$s" --out "${n}_$s.rawlog" --quiet \
+		"$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames $FRAMES --seed "$s" --out "${n}_$s.rawlog" --quiet \
 			$([ $n != plain ] && echo --lidar-distortion) $([ $n = ideal ] && echo --ideal-deskew) > /dev/null &
 	done
 	wait -n && wait -n && wait -n || fail "seed $s: vlo-sim failed"
 done
-rawlog-edit --info -i dist_1.rawlog | grep -Eq "LIDAR +/ +40 " || fail "rawlog-edit does not see 40 scans"
+rawlog-edit --info -i dist_1.rawlog | grep -Eq "LIDAR +/ +$FRAMES " || fail "rawlog-edit does not see $FRAMES scans"
 
 # rpe NAME SEED RAWLOG MODE [--set ...]: runs and prints the frame-to-frame RMS [m] and the KITTI t_err [%]
-# over 10 and 20 m against the seed's ground truth
+# over 10, 20 and 50 m against the seed's ground truth
 rpe() {
 	local name=$1 seed=$2 rawlog=$3 mode=$4
 	shift 4
@@ -34,11 +36,12 @@ rpe() {
 		"$@" --out "out_$name" --quiet > /dev/null || { fail "$name: vlo-run failed"; return; }
 	local gt="plain_$seed.gt.tum" est="out_$name/trajectory_$mode.tum"
 	"$BIN/vlo-eval" --gt "$gt" --est "$est" --metric rpe --json "$name.json" > /dev/null
-	"$BIN/vlo-eval" --gt "$gt" --est "$est" --kitti-lengths 10,20 --json "${name}_k.json" > /dev/null
+	"$BIN/vlo-eval" --gt "$gt" --est "$est" --kitti-lengths 10,20,50 --json "${name}_k.json" > /dev/null
 	echo "$(jv "$name.json" rpe_t_rmse_m) $(jv "${name}_k.json" kitti_t_err_pct)"
 }
-# mean of the ratios "a b" per line, b / a
-mean_ratio() { awk '{ s += $2 / $1; n++ } END { if (n) printf "%.3f", s / n }'; }
+# ratio of the means of "a b" per line, sum b / sum a (a mean of per-seed ratios is led by the seed
+# whose reference happens to be best)
+mean_ratio() { awk '{ a += $1; b += $2 } END { if (a > 0) printf "%.3f", b / a }'; }
 
 for mode in lo vlo; do
 	rms_pairs="" terr_pairs="" ideal_rms_pairs="" ideal_terr_pairs=""

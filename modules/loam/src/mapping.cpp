@@ -138,19 +138,19 @@ bool ScanToMap::refine(const Input& in, Result& res) const
 	Matches m;
 	Eigen::Isometry3d T = res.T_map_curr;
 	SolveReport rep;
-	// auto: decided once per frame, from the planes matched at the guess (round 0's matches).
-	const bool automatic = opt_.edges == "auto";
+	// Round 0's matches at the guess. With edges = auto their planes decide, once per frame, whether
+	// lines are sought too: only where the planes leave the translation weak.
 	bool with_edges = opt_.edges == "on";
-	if (automatic)
+	findMatches(in, T, with_edges, m);
+	if (opt_.edges == "auto" && planesLeaveTranslationWeak(m, T))
 	{
-		findMatches(in, T, false, m);
-		with_edges = planesLeaveTranslationWeak(m, T);
-		if (with_edges) findEdgeMatches(in, T, m);
+		with_edges = true;
+		findEdgeMatches(in, T, m);
 	}
 	res.used_edges = with_edges;
 	for (int round = 0; round < opt_.solver.outer_iterations; ++round)
 	{
-		if (round > 0 || !automatic) findMatches(in, T, with_edges, m);
+		if (round > 0) findMatches(in, T, with_edges, m);
 		res.n_edges = static_cast<int>(m.edges.size());
 		res.n_planes = static_cast<int>(m.planes.size());
 		if (res.n_planes < opt_.min_plane_correspondences || res.n_edges < opt_.min_edge_correspondences)

@@ -19,6 +19,23 @@ std::unique_ptr<ceres::LossFunction> makeLoss(const SolverOptions& o)
 	return nullptr;
 }
 
+/// IRLS weight rho'(s) of the robust loss at squared residual s (1 without a loss).
+double robustWeight(const ceres::LossFunction* loss, double s)
+{
+	if (!loss) return 1.0;
+	double rho[3];
+	loss->Evaluate(s, rho);
+	return rho[1];
+}
+
+Eigen::Vector3d edgeResidual(const EdgeMatch& e, const Eigen::Isometry3d& T)
+{
+	const Eigen::Vector3d d = T * e.p - e.a;
+	return d - e.u * e.u.dot(d);
+}
+
+double planeResidual(const PlaneMatch& p, const Eigen::Isometry3d& T) { return p.n.dot(T * p.p) + p.d; }
+
 Eigen::Matrix3d skew(const Eigen::Vector3d& v)
 {
 	Eigen::Matrix3d m;
@@ -41,32 +58,26 @@ void evaluateMatches(const Matches& m, const SolverOptions& o, const Eigen::Isom
 	const Eigen::Matrix3d R = T.rotation();
 	JtJ.setZero();
 	double sum2 = 0;
-	// IRLS weight rho'(s) of the robust loss, so outliers count as little as in the solve.
-	const auto weight = [&](double s) {
-		if (!loss) return 1.0;
-		double rho[3];
-		loss->Evaluate(s, rho);
-		return rho[1];
-	};
+	// Weighted as in the solve, so outliers count as little there as here.
 	Eigen::Matrix<double, 3, 6> J;
 	for (const EdgeMatch& e : m.edges)
 	{
 		const Eigen::Vector3d Rp = R * e.p;
 		const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - e.u * e.u.transpose();
-		const Eigen::Vector3d r = P * (Rp + T.translation() - e.a);
+		const double s = edgeResidual(e, T).squaredNorm();
 		J.leftCols<3>() = -P * skew(Rp);
 		J.rightCols<3>() = P;
-		JtJ += weight(r.squaredNorm()) * J.transpose() * J;
-		sum2 += r.squaredNorm();
+		JtJ += robustWeight(loss.get(), s) * J.transpose() * J;
+		sum2 += s;
 	}
 	for (const PlaneMatch& p : m.planes)
 	{
 		const Eigen::Vector3d Rp = R * p.p;
-		const double r = p.n.dot(Rp + T.translation()) + p.d;
+		const double r = planeResidual(p, T);
 		Eigen::Matrix<double, 1, 6> j;
 		j.leftCols<3>() = -p.n.transpose() * skew(Rp);
 		j.rightCols<3>() = p.n.transpose();
-		JtJ += weight(r * r) * j.transpose() * j;
+		JtJ += robustWeight(loss.get(), r * r) * j.transpose() * j;
 		sum2 += r * r;
 	}
 	rms = m.size() ? std::sqrt(sum2 / static_cast<double>(m.size())) : 0.0;
@@ -85,6 +96,7 @@ SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3
 	std::deque<EdgeFactor> edges;
 	std::deque<PlaneFactor> planes;
 	std::deque<BatchFactor> batches;
+	std::vector<double> we, wp;  // the batches' weights
 	const auto loss = makeLoss(o);
 	ceres::EigenQuaternionManifold manifold;
 
@@ -98,6 +110,7 @@ SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3
 	problem.AddParameterBlock(q, 4, &manifold);
 	problem.AddParameterBlock(t, 3);
 	const int B = o.matches_per_block;
+	const int ne = static_cast<int>(m.edges.size()), np = static_cast<int>(m.planes.size());
 	if (B <= 1)
 	{
 		for (const EdgeMatch& e : m.edges) problem.AddResidualBlock(&edges.emplace_back(e), loss.get(), q, t);
@@ -105,25 +118,42 @@ SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3
 	}
 	else
 	{
-		const int ne = static_cast<int>(m.edges.size()), np = static_cast<int>(m.planes.size());
+		we.resize(ne), wp.resize(np);
 		for (int i = 0; i < ne; i += B)
-			problem.AddResidualBlock(&batches.emplace_back(&m.edges[i], std::min(B, ne - i), nullptr, 0, loss.get()), nullptr, q, t);
+			problem.AddResidualBlock(&batches.emplace_back(&m.edges[i], &we[i], std::min(B, ne - i), nullptr, nullptr, 0), nullptr, q, t);
 		for (int i = 0; i < np; i += B)
-			problem.AddResidualBlock(&batches.emplace_back(nullptr, 0, &m.planes[i], std::min(B, np - i), loss.get()), nullptr, q, t);
+			problem.AddResidualBlock(&batches.emplace_back(nullptr, nullptr, 0, &m.planes[i], &wp[i], std::min(B, np - i)), nullptr, q, t);
 	}
 
 	ceres::Solver::Options so;
 	so.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;  // 6 unknowns: normal equations are cheapest
-	so.max_num_iterations = o.max_solver_iterations;
 	so.num_threads = 1;
 	so.logging_type = ceres::SILENT;
 	so.minimizer_progress_to_stdout = false;
 	ceres::Solver::Summary summary;
-	ceres::Solve(so, &problem, &summary);
-
-	rep.iterations = static_cast<int>(summary.num_successful_steps + summary.num_unsuccessful_steps);
-	rep.initial_cost = summary.initial_cost;
-	rep.final_cost = summary.final_cost;
+	if (B <= 1)
+	{
+		so.max_num_iterations = o.max_solver_iterations;
+		ceres::Solve(so, &problem, &summary);
+		rep.iterations = static_cast<int>(summary.num_successful_steps + summary.num_unsuccessful_steps);
+	}
+	else
+	{
+		// Batched: iteratively reweighted least squares. Each iteration weighs the matches by
+		// rho'(s) at the current pose and takes one least-squares step: Ceres' own step with the loss
+		// per block (its corrector for rho'' <= 0), and for Huber and Cauchy (rho concave in s) each
+		// reweighting lowers the robust cost.
+		so.max_num_iterations = 1;
+		for (int it = 0; it < o.max_solver_iterations; ++it)
+		{
+			const Eigen::Isometry3d Ti = Eigen::Translation3d(t[0], t[1], t[2]) * Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized();
+			for (int i = 0; i < ne; ++i) we[i] = robustWeight(loss.get(), edgeResidual(m.edges[i], Ti).squaredNorm());
+			for (int i = 0; i < np; ++i) wp[i] = robustWeight(loss.get(), std::pow(planeResidual(m.planes[i], Ti), 2));
+			ceres::Solve(so, &problem, &summary);
+			rep.iterations += static_cast<int>(summary.num_successful_steps + summary.num_unsuccessful_steps);
+			if (summary.termination_type == ceres::CONVERGENCE) break;  // the weights would not change
+		}
+	}
 	Eigen::Quaterniond qs(q[3], q[0], q[1], q[2]);
 	qs.normalize();
 	T.linear() = qs.toRotationMatrix();

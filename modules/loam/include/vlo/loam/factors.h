@@ -35,29 +35,24 @@ class PlaneFactor final : public ceres::SizedCostFunction<1, 4, 3>
    private:
 	PlaneMatch m_;
 };
-}  // namespace vlo::loam
 
-namespace ceres
-{
-class LossFunction;
-}
-
-namespace vlo::loam
-{
-/// Many matches in one Ceres residual block, each robustified on its own: residual
-/// sqrt(rho(s)/s) * r with its exact Jacobian, so the block's squared norm is sum rho(s_i), the
-/// very cost of one block per match with the loss attached, at a fraction of Ceres' per-block
-/// overhead. `loss` may be null (plain least squares); matches must outlive the factor.
+/// Many matches in one Ceres residual block, each weighted: residual sqrt(w_i) r_i with its exact
+/// Jacobian, so the block's cost is the weighted least squares sum w_i |r_i|^2 / 2. With the
+/// robust loss's weights rho'(s_i) taken at the start of a solve this is one step of iteratively
+/// reweighted least squares: Ceres' own robust step for Huber and Cauchy (its corrector scales
+/// by sqrt(rho') where rho'' <= 0), at a fraction of its per-block overhead. Null weights: all 1.
+/// Matches and weights must outlive the factor.
 class BatchFactor final : public ceres::CostFunction
 {
    public:
-	BatchFactor(const EdgeMatch* edges, int n_edges, const PlaneMatch* planes, int n_planes, const ceres::LossFunction* loss);
+	BatchFactor(const EdgeMatch* edges, const double* edge_weights, int n_edges, const PlaneMatch* planes,
+		const double* plane_weights, int n_planes);
 	bool Evaluate(double const* const* x, double* residuals, double** jacobians) const override;
 
    private:
 	const EdgeMatch* edges_;
 	const PlaneMatch* planes_;
+	const double *edge_w_, *plane_w_;
 	int n_edges_, n_planes_;
-	const ceres::LossFunction* loss_;
 };
 }  // namespace vlo::loam

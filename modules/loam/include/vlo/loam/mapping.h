@@ -57,12 +57,12 @@ class ScanToMap
 
 	/// One round's matches for `in` at pose T.
 	void findMatches(const Input& in, const Eigen::Isometry3d& T, bool with_edges, Matches& out) const;
+
+   private:
 	/// Appends the line matches of `in` at pose T to out.edges.
 	void findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
 	/// edges = auto: whether plane matches (m holds no line matches) constrain the translation too weakly.
 	bool planesLeaveTranslationWeak(const Matches& m, const Eigen::Isometry3d& T) const;
-
-   private:
 	/// Correspondence + solve rounds from res.T_map_curr until converged; false (res.reason set)
 	/// when too few matches.
 	bool refine(const Input& in, Result& res) const;

@@ -107,7 +107,7 @@ struct MappingOptions : public OptionSet
 	/// Edge points matched to lines of the map: "on" (A-LOAM), "off" (planes only, no edge map), or
 	/// "auto": only in frames where the planes alone leave the translation weak (a corridor, trees),
 	/// since lines bias the pose where planes suffice (curbs: pitch; vehicles: the step; doc/LOAM.md).
-	std::string edges = "on";
+	std::string edges = "auto";
 	/// auto: planes leave the translation weak when its information along the weakest direction
 	/// (J^T J of the plane matches with the rotation marginalised, as [loam.prior]) is below this.
 	double edges_below_plane_information = 30;
@@ -116,7 +116,7 @@ struct MappingOptions : public OptionSet
 	double voxel_size = 2.0;  ///< hash voxel edge; >= 2 * max_nn_distance keeps the search exact [m]
 	int max_points_per_voxel = 80;
 	double map_radius = 150.0;  ///< voxels farther from the vehicle are dropped [m]
-	int knn = 5;
+	int knn = 8;  ///< A-LOAM: 5; 8 lets fewer false lines through (doc/LOAM.md step 4)
 	double max_nn_distance = 1.0;  ///< all knn neighbours must be this close [m]
 	double edge_eigen_ratio = 3.0;  ///< line if largest eigenvalue > ratio * middle one
 	double plane_max_distance = 0.05;  ///< plane if every neighbour is this close to it [m]

@@ -10,7 +10,6 @@ namespace vlo::loam
 struct SolveReport
 {
 	int iterations = 0;  ///< Ceres iterations
-	double initial_cost = 0, final_cost = 0;  ///< Ceres costs (robustified)
 	double rms = 0;  ///< RMS of the point-to-line/plane distances at the solution [m]
 	Eigen::Matrix<double, 6, 6> JtJ = Eigen::Matrix<double, 6, 6>::Zero();  ///< robust-weighted, see Degeneracy
 };

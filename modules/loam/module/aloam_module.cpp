@@ -36,6 +36,7 @@ class AloamModule : public LidarOdometryModule
 		table.set("lo_flat", static_cast<long long>(r.n_flat));
 		table.set("lo_odom_iterations", static_cast<long long>(r.odometry.iterations));
 		table.set("lo_odom_rms_m", r.odometry.rms, 4);
+		table.set("lo_map_rounds", static_cast<long long>(r.mapping.rounds));
 		table.set("lo_map_iterations", static_cast<long long>(r.mapping.iterations));
 		table.set("lo_map_rms_m", r.mapping.rms, 4);
 		table.set("lo_map_min_eigen", r.mapping.degeneracy.min_eigenvalue, 2);
@@ -47,6 +48,8 @@ class AloamModule : public LidarOdometryModule
 		// external_stage = auto decides from these (doc/LOAM.md)
 		table.set("lo_odom_info_min", r.odometry.degeneracy.translation_information(0), 1);
 		table.set("lo_odom_info_next", r.odometry.degeneracy.translation_information(1), 1);
+		// ... and edges = auto and the rounds of scan-to-map from this
+		table.set("lo_map_plane_info", r.mapping.plane_information, 1);
 		return mount_.vehiclePose(r.pose);
 	}
 

@@ -125,12 +125,12 @@ void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, bool wi
 		}
 }
 
-bool ScanToMap::planesLeaveTranslationWeak(const Matches& m, const Eigen::Isometry3d& T) const
+double ScanToMap::planeTranslationInformation(const std::vector<PlaneMatch>& planes, const Eigen::Isometry3d& T) const
 {
 	Eigen::Matrix<double, 6, 6> JtJ;
 	double rms;
-	evaluateMatches(m, opt_.solver, T, JtJ, rms);
-	return analyseDegeneracy(JtJ, 0).translation_information(0) < opt_.edges_below_plane_information;
+	evaluateMatches({}, planes, opt_.solver, T, JtJ, rms);
+	return analyseDegeneracy(JtJ, 0).translation_information(0);
 }
 
 bool ScanToMap::refine(const Input& in, Result& res) const
@@ -138,17 +138,14 @@ bool ScanToMap::refine(const Input& in, Result& res) const
 	Matches m;
 	Eigen::Isometry3d T = res.T_map_curr;
 	SolveReport rep;
-	// Round 0's matches at the guess. With edges = auto their planes decide, once per frame, whether
-	// lines are sought too: only where the planes leave the translation weak.
-	bool with_edges = opt_.edges == "on";
-	findMatches(in, T, with_edges, m);
-	if (opt_.edges == "auto" && planesLeaveTranslationWeak(m, T))
-	{
-		with_edges = true;
-		findEdgeMatches(in, T, m);
-	}
+	// Round 0's plane matches at the guess decide, once per frame, whether lines are sought too
+	// (edges = auto: only where the planes leave the translation weak).
+	findMatches(in, T, false, m);
+	res.plane_information = planeTranslationInformation(m.planes, T);
+	const bool with_edges = opt_.edges == "on" || (opt_.edges == "auto" && res.plane_information < opt_.weak_plane_information);
+	if (with_edges) findEdgeMatches(in, T, m);
 	res.used_edges = with_edges;
-	for (int round = 0; round < opt_.solver.outer_iterations; ++round)
+	for (int round = 0; round < opt_.max_rounds; ++round)
 	{
 		if (round > 0) findMatches(in, T, with_edges, m);
 		res.n_edges = static_cast<int>(m.edges.size());
@@ -164,6 +161,10 @@ bool ScanToMap::refine(const Input& in, Result& res) const
 		res.iterations += rep.iterations;
 		++res.rounds;
 		if (roundConverged(before, T, opt_.solver)) break;  // the matches would not change
+		// Past A-LOAM's rounds only while the planes, at the pose reached, fix the translation: along
+		// a corridor further rounds would slide off the guess.
+		if (res.rounds >= opt_.solver.outer_iterations && planeTranslationInformation(m.planes, T) < opt_.weak_plane_information)
+			break;
 	}
 	res.rms = rep.rms;
 	res.degeneracy = analyseDegeneracy(rep.JtJ, opt_.degeneracy_threshold);

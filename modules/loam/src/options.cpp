@@ -104,7 +104,8 @@ void MappingOptions::declare(OptionTable& t)
 	t.add("enabled", enabled, "true | false", "scan-to-map refinement every frame");
 	declareSolver(t, solver);
 	t.add("edges", edges, "on | off | auto", "edge points matched to lines of the map: on, off (planes only, no edge map), auto (where planes leave the translation weak)");
-	t.add("edges_below_plane_information", edges_below_plane_information, ">= 0", "auto: edges when the planes' translation information is below this");
+	t.add("weak_plane_information", weak_plane_information, ">= 0", "planes whose translation information is below this leave it weak: auto seeks edges (at the guess), no rounds past outer_iterations (at the pose reached)");
+	t.add("max_rounds", max_rounds, ">= 1", "rounds continue past outer_iterations while the pose still moves and the planes fix the translation, up to this many");
 	t.add("edge_leaf", edge_leaf, "> 0", "downsampling of the scan's edge points [m]");
 	t.add("plane_leaf", plane_leaf, "> 0", "downsampling of the scan's plane points [m]");
 	t.add("map_edge_resolution", map_edge_resolution, "> 0", "edge map: one point per cell [m]");
@@ -137,6 +138,7 @@ void MappingOptions::checkRelations() const
 	require(max_points_per_voxel >= knn, "max_points_per_voxel", "must be >= knn");
 	require(edges == "on" || min_edge_correspondences == 0, "min_edge_correspondences", "must be 0 unless edges is on");
 	require(map_radius > voxel_size, "map_radius", "must exceed voxel_size");
+	require(max_rounds >= solver.outer_iterations, "max_rounds", "must be >= outer_iterations");
 }
 
 void PriorOptions::declare(OptionTable& t)

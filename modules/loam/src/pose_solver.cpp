@@ -51,8 +51,8 @@ bool roundConverged(const Eigen::Isometry3d& before, const Eigen::Isometry3d& af
 		Eigen::AngleAxisd(d.rotation()).angle() * 180.0 / M_PI < o.converged_rotation_deg;
 }
 
-void evaluateMatches(const Matches& m, const SolverOptions& o, const Eigen::Isometry3d& T,
-	Eigen::Matrix<double, 6, 6>& JtJ, double& rms)
+void evaluateMatches(const std::vector<EdgeMatch>& edges, const std::vector<PlaneMatch>& planes, const SolverOptions& o,
+	const Eigen::Isometry3d& T, Eigen::Matrix<double, 6, 6>& JtJ, double& rms)
 {
 	const auto loss = makeLoss(o);
 	const Eigen::Matrix3d R = T.rotation();
@@ -60,7 +60,7 @@ void evaluateMatches(const Matches& m, const SolverOptions& o, const Eigen::Isom
 	double sum2 = 0;
 	// Weighted as in the solve, so outliers count as little there as here.
 	Eigen::Matrix<double, 3, 6> J;
-	for (const EdgeMatch& e : m.edges)
+	for (const EdgeMatch& e : edges)
 	{
 		const Eigen::Vector3d Rp = R * e.p;
 		const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - e.u * e.u.transpose();
@@ -70,7 +70,7 @@ void evaluateMatches(const Matches& m, const SolverOptions& o, const Eigen::Isom
 		JtJ += robustWeight(loss.get(), s) * J.transpose() * J;
 		sum2 += s;
 	}
-	for (const PlaneMatch& p : m.planes)
+	for (const PlaneMatch& p : planes)
 	{
 		const Eigen::Vector3d Rp = R * p.p;
 		const double r = planeResidual(p, T);
@@ -80,7 +80,8 @@ void evaluateMatches(const Matches& m, const SolverOptions& o, const Eigen::Isom
 		JtJ += robustWeight(loss.get(), r * r) * j.transpose() * j;
 		sum2 += r * r;
 	}
-	rms = m.size() ? std::sqrt(sum2 / static_cast<double>(m.size())) : 0.0;
+	const std::size_t n = edges.size() + planes.size();
+	rms = n ? std::sqrt(sum2 / static_cast<double>(n)) : 0.0;
 }
 
 SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3d& T)
@@ -158,7 +159,7 @@ SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3
 	qs.normalize();
 	T.linear() = qs.toRotationMatrix();
 	T.translation() = Eigen::Vector3d(t[0], t[1], t[2]);
-	evaluateMatches(m, o, T, rep.JtJ, rep.rms);
+	evaluateMatches(m.edges, m.planes, o, T, rep.JtJ, rep.rms);
 	return rep;
 }
 }  // namespace vlo::loam

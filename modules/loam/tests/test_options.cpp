@@ -83,6 +83,8 @@ TEST(Options, BadValuesNameSectionAndKey)
 	EXPECT_NE(errorOf("[loam.odometry]\nmax_rounds = 1\n").find("[loam.odometry] max_rounds: must be >= outer_iterations"),
 		std::string::npos);
 	EXPECT_NE(errorOf("[loam.odometry]\nmax_rounds = many\n").find("max_rounds"), std::string::npos);
+	EXPECT_NE(errorOf("[loam.mapping]\nouter_iterations = 3\nmax_rounds = 2\n").find("[loam.mapping] max_rounds: must be >= outer_iterations"),
+		std::string::npos);
 	EXPECT_NE(errorOf("[loam.mapping]\nloss = tukey\n").find("[loam.mapping] loss"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.mapping]\nvoxel_size = 1.0\n").find("voxel_size"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.mapping]\nknn = 17\n").find("[loam.mapping] knn"), std::string::npos);  // plane fits widen to 16

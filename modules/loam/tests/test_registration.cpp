@@ -153,6 +153,60 @@ TEST(Registration, CorridorIsFlaggedDegenerate)
 	EXPECT_TRUE(c.mapping.used_edges);
 	EXPECT_FALSE(s.mapping.used_edges);
 }
+TEST(Registration, ScanToMapRoundsGoOnOnlyWhereThePlanesFixTheTranslation)
+{
+	// A scan aligned to a map of three noisy scans from a guess 12 cm and 0.5 deg off (a VO step
+	// that went straight to scan-to-map): in a street the rounds go on while the pose moves and
+	// reach the truth, where A-LOAM's two stop short; between a corridor's walls they stop at two,
+	// which they would not if the planes' information did not stop them.
+	struct Out
+	{
+		double error;
+		int rounds;
+	};
+	const auto align = [](const World& w, int max_rounds, double weak_plane_information) {
+		LoamOptions o = hdl64Options();
+		o.mapping.max_rounds = max_rounds;
+		o.mapping.weak_plane_information = weak_plane_information;
+		ScanPreprocessor pre(o.scan);
+		FeatureExtractor fx(o.features);
+		ScanToMap mapper(o.mapping);
+		LidarModel lidar = hdl64();
+		lidar.noise_sigma = 0.02;
+		std::mt19937 rng(5);
+		Eigen::Isometry3d A = Eigen::Isometry3d::Identity();
+		A.translation() = Eigen::Vector3d(20, 0.3, 1.73);
+		for (int k = -2; k <= 0; ++k)
+		{
+			const Eigen::Isometry3d Ak = A * motion(k, 0, 0, 0, 0, 0);
+			mapper.insert(fx.extract(pre.process(scan(w, lidar, Ak, &rng))), Ak);
+		}
+		const Eigen::Isometry3d B = A * motion(1.0, 0, 0, 0, 0, 0);
+		const ScanToMap::Result r = mapper.align(
+			mapper.prepare(fx.extract(pre.process(scan(w, lidar, B, &rng)))), B * motion(0.1, -0.06, 0.02, 0.5, 0, 0));
+		EXPECT_TRUE(r.ok);
+		return Out{translationError(r.T_map_curr, B), r.rounds};
+	};
+	const World street = [] {
+		Path p;
+		p.add(80, 0.0);
+		return urbanWorld(p, 3);
+	}();
+	const World corridor = corridorWorld(400, 4.0, 5.0);
+	const MappingOptions d;
+	const int two = d.solver.outer_iterations;
+	const Out s2 = align(street, two, d.weak_plane_information), s = align(street, d.max_rounds, d.weak_plane_information);
+	const Out c = align(corridor, d.max_rounds, d.weak_plane_information), c_on = align(corridor, d.max_rounds, 0);
+	std::printf("scan-to-map from 12 cm off: street %.4f m in %d rounds (two rounds: %.4f m); corridor %d rounds, %d "
+				"without the planes' check\n",
+		s.error, s.rounds, s2.error, c.rounds, c_on.rounds);
+	EXPECT_GT(s.rounds, two);
+	EXPECT_LT(s.error, 0.003);
+	EXPECT_GT(s2.error, 3 * s.error);
+	EXPECT_EQ(c.rounds, two);
+	EXPECT_GT(c_on.rounds, two);
+}
+
 TEST(Registration, PlaneMatchesNeedAFourthPointOnThePlane)
 {
 	// Scan-to-scan plane matches at the true motion, against the reference scan as measured and

@@ -134,14 +134,20 @@ TEST(Solver, DegeneracyFlagsAnUnconstrainedDirection)
 	Eigen::Matrix<double, 6, 6> H;
 	double rms = 0;
 	// Ground and walls along x only: nothing stops a slide along x.
-	evaluateMatches(syntheticMatches(truth, {{0, 0, 1}, {0, 1, 0}}, false, 0.0, 4), o, truth, H, rms);
+	{
+		const Matches sm = syntheticMatches(truth, {{0, 0, 1}, {0, 1, 0}}, false, 0.0, 4);
+		evaluateMatches(sm.edges, sm.planes, o, truth, H, rms);
+	}
 	const Degeneracy corridor = analyseDegeneracy(H, 10.0);
 	EXPECT_TRUE(corridor.degenerate);
 	EXPECT_LT(corridor.min_eigenvalue, 1e-6);
 	EXPECT_NEAR(std::abs(corridor.weakest(3)), 1.0, 1e-3);  // the x translation
 	EXPECT_LT(rms, 1e-9);
 
-	evaluateMatches(syntheticMatches(truth, {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}}, false, 0.0, 5), o, truth, H, rms);
+	{
+		const Matches sm = syntheticMatches(truth, {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}}, false, 0.0, 5);
+		evaluateMatches(sm.edges, sm.planes, o, truth, H, rms);
+	}
 	const Degeneracy box = analyseDegeneracy(H, 10.0);
 	EXPECT_FALSE(box.degenerate);
 	EXPECT_GT(box.min_translation_eigenvalue, 100.0);

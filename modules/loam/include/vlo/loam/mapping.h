@@ -33,6 +33,7 @@ class ScanToMap
 		int iterations = 0;
 		int n_edges = 0, n_planes = 0;  ///< matches of the last round
 		bool used_edges = false;  ///< edge matches were sought (edges = on, or auto and the planes are weak)
+		double plane_information = 0;  ///< the planes' translation information at the guess
 		double rms = 0;  ///< distance RMS at the solution [m]
 		Degeneracy degeneracy;
 		std::vector<Eigen::Vector3f> arrived;  ///< points in the previous scan's free space, not matched (map frame)
@@ -61,8 +62,8 @@ class ScanToMap
    private:
 	/// Appends the line matches of `in` at pose T to out.edges.
 	void findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
-	/// edges = auto: whether plane matches (m holds no line matches) constrain the translation too weakly.
-	bool planesLeaveTranslationWeak(const Matches& m, const Eigen::Isometry3d& T) const;
+	/// Information the plane matches give the translation at T along its weakest direction.
+	double planeTranslationInformation(const std::vector<PlaneMatch>& planes, const Eigen::Isometry3d& T) const;
 	/// Correspondence + solve rounds from res.T_map_curr until converged; false (res.reason set)
 	/// when too few matches.
 	bool refine(const Input& in, Result& res) const;

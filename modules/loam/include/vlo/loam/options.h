@@ -108,9 +108,15 @@ struct MappingOptions : public OptionSet
 	/// "auto": only in frames where the planes alone leave the translation weak (a corridor, trees),
 	/// since lines bias the pose where planes suffice (curbs: pitch; vehicles: the step; doc/LOAM.md).
 	std::string edges = "auto";
-	/// auto: planes leave the translation weak when its information along the weakest direction
-	/// (J^T J of the plane matches with the rotation marginalised, as [loam.prior]) is below this.
-	double edges_below_plane_information = 30;
+	/// The planes leave the translation weak when its information along the weakest direction
+	/// (robust-weighted J^T J of the plane matches, rotation marginalised, as [loam.prior]) is below
+	/// this: edges = auto seeks lines where it is at the guess, and no round goes past
+	/// solver.outer_iterations where it is at the pose reached.
+	double weak_plane_information = 30;
+	/// Rounds go on past solver.outer_iterations while a round still moves the pose and the planes
+	/// fix the translation (a guess centimetres off that skipped scan-to-scan), up to this many in
+	/// all; along a corridor further rounds would slide off the guess, so A-LOAM's two stay there.
+	int max_rounds = 10;
 	double edge_leaf = 0.4, plane_leaf = 0.8;  ///< downsampling of the scan's features [m]
 	double map_edge_resolution = 0.2, map_plane_resolution = 0.4;  ///< one map point per cell [m]
 	double voxel_size = 2.0;  ///< hash voxel edge; >= 2 * max_nn_distance keeps the search exact [m]

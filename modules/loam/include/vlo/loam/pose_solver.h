@@ -21,6 +21,6 @@ SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3
 bool roundConverged(const Eigen::Isometry3d& before, const Eigen::Isometry3d& after, const SolverOptions& o);
 
 /// The robust-weighted J^T J and RMS distance of the matches at T (what solvePose reports).
-void evaluateMatches(const Matches& m, const SolverOptions& o, const Eigen::Isometry3d& T,
-	Eigen::Matrix<double, 6, 6>& JtJ, double& rms);
+void evaluateMatches(const std::vector<EdgeMatch>& edges, const std::vector<PlaneMatch>& planes, const SolverOptions& o,
+	const Eigen::Isometry3d& T, Eigen::Matrix<double, 6, 6>& JtJ, double& rms);
 }  // namespace vlo::loam

@@ -1,7 +1,7 @@
 #include "vlo/loam/features.h"
 
 #include <vlo/loam/rings.h>
-#include <vlo/loam/voxel_hash.h>
+#include <vlo/core/voxel_hash.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "vlo/loam/voxel_filter.h"
 
-#include <vlo/loam/voxel_hash.h>
+#include <vlo/core/voxel_hash.h>
 
 #include <cmath>
 

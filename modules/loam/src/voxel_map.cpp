@@ -132,34 +132,6 @@ std::size_t VoxelMap::removeFar(const Eigen::Vector3f& c, float radius)
 	return removed;
 }
 
-std::size_t VoxelMap::removeIf(const Eigen::Vector3f& c, float radius, const std::function<bool(const Eigen::Vector3f&)>& gone)
-{
-	std::size_t removed = 0;
-	const float r2 = radius * radius;
-	const float reach = radius + static_cast<float>(size_) * 0.87f;  // + half a voxel's diagonal
-	const float half = static_cast<float>(0.5 * size_);
-	index_.forEach([&](std::uint64_t, std::uint32_t id) {
-		Voxel& v = voxels_[id];
-		const Eigen::Vector3f centre = v.key.cast<float>() * static_cast<float>(size_) + Eigen::Vector3f::Constant(half);
-		if ((centre - c).squaredNorm() > reach * reach) return;
-		for (std::size_t i = 0; i < v.points.size();)
-		{
-			if ((v.points[i] - c).squaredNorm() > r2 || !gone(v.points[i]))
-			{
-				++i;
-				continue;
-			}
-			// Swap-remove: the order within a voxel does not matter; the cell is free again.
-			v.points[i] = v.points.back(), v.points.pop_back();
-			v.cells[i] = v.cells.back(), v.cells.pop_back();
-			v.tags[i] = v.tags.back(), v.tags.pop_back();
-			++removed;
-		}
-	});
-	n_points_ -= removed;
-	return removed;
-}
-
 void VoxelMap::clear()
 {
 	index_.clear();

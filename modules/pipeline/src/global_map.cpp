@@ -6,10 +6,10 @@ namespace vlo
 {
 std::uint64_t GlobalMap::key(const Eigen::Vector3f& w) const
 {
-	// 21 bits per axis: +-200 km at 0.2 m voxels.
+	// 21 bits per axis: +-200 km at 0.2 m voxels (never all 64 bits set: VoxelHash's empty key).
 	const float leaf = static_cast<float>(leaf_);
 	const auto cell = [&](float v) {
-		return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / leaf)) & 0x1FFFFF);
+		return static_cast<std::uint64_t>(fastFloor(v / leaf)) & 0x1FFFFF;
 	};
 	return (cell(w.x()) << 42) | (cell(w.y()) << 21) | cell(w.z());
 }
@@ -18,19 +18,23 @@ void GlobalMap::insert(const PointCloud& scan, const Eigen::Isometry3d& world_T_
 {
 	const Eigen::Isometry3f T = world_T_lidar.cast<float>();
 	const float r2 = static_cast<float>(max_range_ * max_range_);
+	std::uint64_t last = ~0ull;  // consecutive returns often share a voxel: one lookup for the run
 	for (const auto& p : scan)
 	{
 		const Eigen::Vector3f s(p.x, p.y, p.z);
 		if (s.squaredNorm() > r2) continue;
 		const Eigen::Vector3f w = T * s;
-		if (occupied_.insert(key(w)).second) points_.push_back({w.x(), w.y(), w.z(), p.intensity});
+		const std::uint64_t k = key(w);
+		if (k == last) continue;
+		last = k;
+		if (occupied_.insert(k, 0).second) points_.push_back({w.x(), w.y(), w.z(), p.intensity});
 	}
 	while (points_.size() > max_points_) coarsen();
 }
 
 PointCloud GlobalMap::takePoints()
 {
-	std::unordered_set<std::uint64_t>().swap(occupied_);
+	occupied_ = VoxelHash();
 	PointCloud out = std::move(points_);
 	points_ = PointCloud();
 	return out;
@@ -39,12 +43,11 @@ PointCloud GlobalMap::takePoints()
 void GlobalMap::coarsen()
 {
 	leaf_ *= 2;
-	occupied_.clear();
+	occupied_ = VoxelHash();
 	std::size_t kept = 0;
 	for (const auto& p : points_)
-		if (occupied_.insert(key({p.x, p.y, p.z})).second) points_[kept++] = p;
+		if (occupied_.insert(key({p.x, p.y, p.z}), 0).second) points_[kept++] = p;
 	points_.resize(kept);
 	points_.shrink_to_fit();
-	occupied_.rehash(0);
 }
 }  // namespace vlo

@@ -6,12 +6,11 @@
 //   holds at most the volume of that ball, however long the drive.
 // - Fast neighbour search without rebuilding a kd-tree each frame: the k nearest points within r
 //   of q all lie in the 2x2x2 voxels nearest to q whenever r <= voxel_size / 2.
-#include <vlo/loam/voxel_hash.h>
+#include <vlo/core/voxel_hash.h>
 
 #include <Eigen/Core>
 
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 namespace vlo::loam
@@ -31,7 +30,9 @@ class VoxelMap
 	std::size_t removeFar(const Eigen::Vector3f& c, float radius);
 	void clear();
 	/// Drops the points within radius of c for which gone(point) holds; returns how many went.
-	std::size_t removeIf(const Eigen::Vector3f& c, float radius, const std::function<bool(const Eigen::Vector3f&)>& gone);
+	/// (A template: the test runs for every map point near the vehicle each frame, inlined.)
+	template <class Gone>
+	std::size_t removeIf(const Eigen::Vector3f& c, float radius, Gone&& gone);
 
 	std::size_t numPoints() const { return n_points_; }
 	std::size_t numVoxels() const { return index_.size(); }
@@ -56,4 +57,33 @@ class VoxelMap
 	std::vector<std::uint32_t> free_;  ///< recycled slots
 	std::size_t n_points_ = 0;
 };
+
+template <class Gone>
+std::size_t VoxelMap::removeIf(const Eigen::Vector3f& c, float radius, Gone&& gone)
+{
+	std::size_t removed = 0;
+	const float r2 = radius * radius;
+	const float reach = radius + static_cast<float>(size_) * 0.87f;  // + half a voxel's diagonal
+	const float half = static_cast<float>(0.5 * size_);
+	index_.forEach([&](std::uint64_t, std::uint32_t id) {
+		Voxel& v = voxels_[id];
+		const Eigen::Vector3f centre = v.key.cast<float>() * static_cast<float>(size_) + Eigen::Vector3f::Constant(half);
+		if ((centre - c).squaredNorm() > reach * reach) return;
+		for (std::size_t i = 0; i < v.points.size();)
+		{
+			if ((v.points[i] - c).squaredNorm() > r2 || !gone(v.points[i]))
+			{
+				++i;
+				continue;
+			}
+			// Swap-remove: the order within a voxel does not matter; the cell is free again.
+			v.points[i] = v.points.back(), v.points.pop_back();
+			v.cells[i] = v.cells.back(), v.cells.pop_back();
+			v.tags[i] = v.tags.back(), v.tags.pop_back();
+			++removed;
+		}
+	});
+	n_points_ -= removed;
+	return removed;
+}
 }  // namespace vlo::loam

@@ -4,10 +4,10 @@
 // past it the voxels double in size and the map is thinned again, and memory stays bounded however
 // long the drive (a 5 km drive gets a coarser map.pcd than a 500 m one; doc/ROBUSTNESS.md).
 #include <vlo/core/frame.h>
+#include <vlo/core/voxel_hash.h>
 
 #include <Eigen/Geometry>
 #include <cstdint>
-#include <unordered_set>
 
 namespace vlo
 {
@@ -39,7 +39,7 @@ class GlobalMap
 
 	double leaf_, max_range_;
 	std::size_t max_points_;
-	std::unordered_set<std::uint64_t> occupied_;
+	VoxelHash occupied_;  ///< voxel key -> nothing (a set)
 	PointCloud points_;
 };
 }  // namespace vlo

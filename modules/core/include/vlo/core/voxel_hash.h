@@ -1,13 +1,13 @@
 #pragma once
-// A small open-addressing hash map from voxel coordinates to a 32-bit value, for the map and the
-// voxel filter: linear probing in one flat array, several times faster than std::unordered_map
+// A small open-addressing hash map from voxel coordinates to a 32-bit value, for LOAM's map and
+// voxel filter and the run's map.pcd: linear probing in one flat array, several times faster than std::unordered_map
 // for these lookups (no node per entry, one cache line per probe).
 #include <Eigen/Core>
 
 #include <cstdint>
 #include <vector>
 
-namespace vlo::loam
+namespace vlo
 {
 /// floor() for the voxel indices: std::floor is a library call on baseline x86-64 (no SSE4.1).
 inline int fastFloor(float x)
@@ -82,4 +82,4 @@ class VoxelHash
 	std::size_t size_ = 0, mask_ = 0;
 	int shift_ = 64;
 };
-}  // namespace vlo::loam
+}  // namespace vlo

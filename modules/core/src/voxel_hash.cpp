@@ -1,8 +1,8 @@
-#include "vlo/loam/voxel_hash.h"
+#include "vlo/core/voxel_hash.h"
 
 #include <algorithm>
 
-namespace vlo::loam
+namespace vlo
 {
 void VoxelHash::allocate(std::size_t capacity)
 {
@@ -66,4 +66,4 @@ void VoxelHash::erase(std::uint64_t key)
 	slots_[i] = Slot{};
 	--size_;
 }
-}  // namespace vlo::loam
+}  // namespace vlo

@@ -103,6 +103,39 @@ TEST(Rings, ExplicitTable)
 	EXPECT_EQ(m.ringOf(p.z, std::hypot(p.x, p.y)), 2);
 }
 
+// ringOf's lookup table must never disagree with the beam table's search (nearestRing), least of all
+// at the bounds between beams: every bound and its float neighbours, and a dense sweep.
+TEST(Rings, RingOfLookupAgreesWithTheSearchEverywhere)
+{
+	ScanOptions table;
+	table.ring_model = "table";
+	table.elevation_table_deg = {5.0, -3.0, 1.0, -20.0, -19.9};
+	ScanOptions hdl64;
+	hdl64.ring_model = "hdl64";
+	for (const ScanOptions& o : {vlp16Options().scan, hdl64, table})
+	{
+		const RingModel m(o);
+		const auto& e = m.elevationsDeg();
+		std::vector<float> ts;
+		for (std::size_t k = 0; k + 1 < e.size(); ++k)
+		{
+			float b = static_cast<float>(std::tan(0.5 * (e[k] + e[k + 1]) * M_PI / 180.0));
+			for (int i = 0; i < 3; ++i) b = std::nextafter(b, -1.0f);
+			for (int i = 0; i < 7; ++i, b = std::nextafter(b, 1.0f)) ts.push_back(b);
+		}
+		for (int i = 0; i <= 200000; ++i) ts.push_back(-1.2f + 2.4f * static_cast<float>(i) / 200000.0f);
+		int in_view = 0;
+		for (float t : ts)
+		{
+			const int r = m.ringOf(t, 1.0f);
+			if (r < 0) continue;
+			++in_view;
+			ASSERT_EQ(r, m.nearestRing(t, 1.0f)) << "tan(elevation) " << t;
+		}
+		EXPECT_GT(in_view, 1000);
+	}
+}
+
 TEST(Rings, BadModelOptionsNameTheKey)
 {
 	ScanOptions o;

@@ -29,6 +29,7 @@ class FreeSpace
 	void add(const ScanPoints& points);
 	void finish();
 	int column(const Eigen::Vector3f& p) const;
+	static float elevationOf(const Eigen::Vector3f& p);
 
 	int n_cols_;
 	std::vector<float> ring_elevation_;  ///< mean elevation of each ring's returns [rad]

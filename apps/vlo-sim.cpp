@@ -29,8 +29,8 @@ int main(int argc, char** argv)
 				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
 				{"traffic", "N", "N vehicles driving the road both ways, overtaking and oncoming (default 0)"},
 				{"traffic-without-returns", "", "the vehicles block the LiDAR's beams but return nothing (an ideal removal of moving points)"},
-				{"rawlog-compression", "gzip|none", "gzip (default) or none: ~1.4x larger, read with less CPU (doc/SPEED.md)"},
-				{"image-format", "png|pnm", "png (default) or pnm (PGM): ~1.8x larger images, read with less CPU (doc/SPEED.md)"}},
+				{"rawlog-compression", "none|gzip", "none (default) or gzip: ~1.4x smaller, read and written with more CPU (doc/SPEED.md)"},
+				{"image-format", "pnm|png", "pnm (PGM, default) or png: ~1.8x smaller images, read and written with more CPU (doc/SPEED.md)"}},
 			"vlo-sim --out FILE.rawlog [options]\n\n"
 			  "Renders a seeded procedural drive headless: a grayscale camera (KITTI intrinsics) and a\n"
 			  "spinning LiDAR, 10 Hz, with ground truth in FILE.gt.tum (vehicle frame, relative to frame 0).");
@@ -59,8 +59,8 @@ int main(int argc, char** argv)
 		cfg.traffic = static_cast<int>(traffic);
 		cfg.traffic_lidar_returns = !cl.has("traffic-without-returns");
 		if (!cfg.traffic_lidar_returns && cfg.traffic == 0) vlo::failInput("--traffic-without-returns", "needs --traffic N");
-		const auto compression = vlo::parseRawlogCompression(cl.get("rawlog-compression", "gzip"), "--rawlog-compression");
-		const auto image_format = vlo::parseImageFileFormat(cl.get("image-format", "png"), "--image-format");
+		const auto compression = vlo::parseRawlogCompression(cl.get("rawlog-compression", "none"), "--rawlog-compression");
+		const auto image_format = vlo::parseImageFileFormat(cl.get("image-format", "pnm"), "--image-format");
 		if (cl.has("blackout"))
 		{
 			const std::string b = cl.get("blackout");

@@ -49,6 +49,7 @@ size_t GzReadStream::Read(void* buffer, size_t count)
 			int err = 0;
 			gzerror(gz, &err);
 			if (err == Z_BUF_ERROR) truncated_ = true;
+			end_reached_ = true;
 			break;
 		}
 	}

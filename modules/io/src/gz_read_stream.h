@@ -28,11 +28,14 @@ class GzReadStream : public mrpt::io::CStream
 	double progress() const;
 	/// True once a read found the file ending before the gzip trailer.
 	bool truncated() const { return truncated_; }
+	/// True once a read got fewer bytes than asked: the data ended (for a plain file, where it may).
+	bool endReached() const { return end_reached_; }
 
    private:
 	std::string path_;
 	void* gz_ = nullptr;  // gzFile, kept opaque so that zlib.h stays out of this header
 	uint64_t file_size_ = 0;
 	bool truncated_ = false;
+	bool end_reached_ = false;
 };
 }  // namespace vlo

@@ -79,7 +79,9 @@ bool ObservationStream::readObject()
 	}
 	catch (const std::exception& e)
 	{
-		if (in_.truncated()) failInput(path_, "truncated: the file ends inside " + nth);
+		// A gzip file cut off, or a plain one ending inside the object.
+		if (in_.truncated() || (in_.endReached() && in_.getPosition() != before))
+			failInput(path_, "truncated: the file ends inside " + nth);
 		if (objects_ == 0) failInput(path_, "not an MRPT rawlog (" + mrptMessage(e.what()) + ")");
 		failInput(path_, "corrupt rawlog at " + nth + ": " + mrptMessage(e.what()));
 	}

@@ -83,7 +83,7 @@ TEST(RawlogErrors, TruncatedOrCorruptUncompressedRawlog)
 	for (double frac : {0.05, 0.3, 0.6, 0.95})
 	{
 		putBytes(bad, bytes.substr(0, static_cast<std::size_t>(frac * bytes.size())));
-		expectInputError([&] { readFrames(bad); }, {bad});
+		expectInputError([&] { readFrames(bad); }, {bad, "truncated: the file ends inside object"});
 	}
 	// Damage inside pixel or point payloads cannot be detected (no checksums); damage to the
 	// structure can: here the class name of the fourth object.

@@ -23,6 +23,16 @@ bool hasCircularRun(std::uint32_t mask16, int n)
 bool fast9(const cv::Mat& img, int x, int y, int threshold)
 {
 	const int c = img.at<std::uint8_t>(y, x);
+	// Any 9 contiguous of the 16 hold at least two of the four compass pixels (0, 4, 8, 12): with
+	// fewer than two brighter and fewer than two darker there is no run (most pixels stop here).
+	int compass_brighter = 0, compass_darker = 0;
+	for (int k = 0; k < 16; k += 4)
+	{
+		const int v = img.at<std::uint8_t>(y + kFastCircle[k].y, x + kFastCircle[k].x);
+		compass_brighter += v > c + threshold;
+		compass_darker += v < c - threshold;
+	}
+	if (compass_brighter < 2 && compass_darker < 2) return false;
 	std::uint32_t brighter = 0, darker = 0;
 	for (int k = 0; k < 16; ++k)
 	{

@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <initializer_list>
+#include <vector>
 
 using namespace vlo::scale;
 
@@ -50,6 +51,24 @@ TEST(Fast9, NineContiguousBrighterOrDarkerIsACorner)
 	cv::Mat dot(15, 15, CV_8U, cv::Scalar(40));
 	dot.at<uchar>(7, 7) = 200;
 	EXPECT_TRUE(fast9(dot, 7, 7, 20));
+}
+
+// The compass pre-check inside fast9 must not lose a run: every arc of 9-16 from every start is a
+// corner (brighter and darker), every arc of 8 is not.
+TEST(Fast9, EveryArcOfNineOrMoreIsACornerWhereverItStarts)
+{
+	for (int start = 0; start < 16; ++start)
+		for (int len = 8; len <= 16; ++len)
+		{
+			std::vector<int> arc;
+			for (int k = 0; k < len; ++k) arc.push_back((start + k) % 16);
+			for (int value : {130, 70})
+			{
+				cv::Mat m(15, 15, CV_8U, cv::Scalar(100));
+				for (int k : arc) m.at<uchar>(7 + kFastCircle[k].y, 7 + kFastCircle[k].x) = static_cast<uchar>(value);
+				EXPECT_EQ(fast9(m, 7, 7, 20), len >= 9) << "start " << start << " length " << len << " value " << value;
+			}
+		}
 }
 
 TEST(Fast9, AgreesWithOpenCvFastEverywhere)

@@ -1,6 +1,5 @@
 #include "vlo/loam/free_space.h"
 
-#include <vlo/loam/rings.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,15 +17,6 @@ FreeSpace::FreeSpace(const ScanPoints& a, const ScanPoints& b, int n_azimuth_bin
 	add(a);
 	add(b);
 	finish();
-}
-
-// atan2 of the height over the horizontal range: asin(z / r) without asin's cost (a map point per call).
-float FreeSpace::elevationOf(const Eigen::Vector3f& p) { return fastAtan2(p.z(), std::sqrt(p.x() * p.x() + p.y() * p.y())); }
-
-int FreeSpace::column(const Eigen::Vector3f& p) const
-{
-	const float u = (fastAtan2(p.y(), p.x()) + static_cast<float>(M_PI)) / static_cast<float>(2 * M_PI);
-	return std::min(n_cols_ - 1, std::max(0, static_cast<int>(u * static_cast<float>(n_cols_))));
 }
 
 void FreeSpace::add(const ScanPoints& points)

@@ -14,6 +14,27 @@ constexpr float kPi = 3.14159265f;
 
 RingSearch::Query::Query(const Eigen::Vector3f& q) : p(q), az(fastAtan2(q.y(), q.x())) {}
 
+// A ring comes in time order: its azimuths rise (or fall, clockwise) from where the sweep started.
+// Rotated (and reversed) to start at the smallest, a strictly rising ring is what a sort would give;
+// anything else (ties, unordered input) is sorted.
+void RingSearch::sortByAzimuth(Entry* b, int n)
+{
+	const auto less = [](const Entry& x, const Entry& y) { return x.az < y.az; };
+	const auto strictly_rising = [&] {
+		for (int k = 1; k < n; ++k)
+			if (!less(b[k - 1], b[k])) return false;
+		return true;
+	};
+	if (n < 2) return;
+	const auto rotate_to_min = [&] { std::rotate(b, std::min_element(b, b + n, less), b + n); };
+	rotate_to_min();
+	if (strictly_rising()) return;
+	std::reverse(b, b + n);
+	rotate_to_min();
+	if (strictly_rising()) return;
+	std::sort(b, b + n, less);
+}
+
 void RingSearch::build(const ScanPoints& points, int n_rings)
 {
 	points_ = &points;
@@ -38,7 +59,7 @@ void RingSearch::build(const ScanPoints& points, int n_rings)
 	{
 		Entry* b = entries_.data() + begin_[r];
 		const int n = static_cast<int>(begin_[r + 1] - begin_[r]);
-		std::sort(b, b + n, [](const Entry& x, const Entry& y) { return x.az < y.az; });
+		sortByAzimuth(b, n);
 		int* bins = bin_start_.data() + static_cast<std::size_t>(r) * (kBins + 1);
 		int k = 0;
 		for (int bin = 0; bin <= kBins; ++bin)

@@ -95,13 +95,24 @@ std::vector<cv::KeyPoint> distributeAnms(std::vector<cv::KeyPoint> kps, int w, i
 	// tiling the region (a narrow bracket keeps the occupancy grids small).
 	const double r0 = std::sqrt(double(w) * h / (M_PI * want));
 	double lo = 0.25 * r0, hi = 4 * r0;
+	std::vector<int> kept_at_lo;  // the corners kept at lo, once a pass has set lo
+	bool have_lo = false;
 	for (int it = 0; it < 8; ++it)
 	{
 		const double mid = 0.5 * (lo + hi);
-		(suppress(kps, w, h, mid, n).size() >= n ? lo : hi) = mid;
+		std::vector<int> kept = suppress(kps, w, h, mid, n);
+		if (kept.size() >= n)
+		{
+			lo = mid;
+			kept_at_lo = std::move(kept);
+			have_lo = true;
+		}
+		else
+			hi = mid;
 	}
+	if (!have_lo) kept_at_lo = suppress(kps, w, h, lo, n);
 	std::vector<cv::KeyPoint> out;
-	for (int i : suppress(kps, w, h, lo, n)) out.push_back(kps[static_cast<std::size_t>(i)]);
+	for (int i : kept_at_lo) out.push_back(kps[static_cast<std::size_t>(i)]);
 	return out;
 }
 

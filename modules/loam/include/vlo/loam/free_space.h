@@ -3,9 +3,13 @@
 // well beyond it, is no longer there (a vehicle that has moved on leaves such ghosts in the map).
 // The scan is binned by ring and azimuth; each bin keeps its nearest return, so only space that
 // every return of the bin crossed counts as free.
+#include <vlo/loam/rings.h>
 #include <vlo/loam/types.h>
 
 #include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
 
 #include <utility>
 #include <vector>
@@ -28,8 +32,14 @@ class FreeSpace
    private:
 	void add(const ScanPoints& points);
 	void finish();
-	int column(const Eigen::Vector3f& p) const;
-	static float elevationOf(const Eigen::Vector3f& p);
+	/// Inline: both run for every map point near the vehicle, every frame.
+	int column(const Eigen::Vector3f& p) const
+	{
+		const float u = (fastAtan2(p.y(), p.x()) + static_cast<float>(M_PI)) / static_cast<float>(2 * M_PI);
+		return std::min(n_cols_ - 1, std::max(0, static_cast<int>(u * static_cast<float>(n_cols_))));
+	}
+	/// atan2 of the height over the horizontal range: asin(z / r) without asin's cost.
+	static float elevationOf(const Eigen::Vector3f& p) { return fastAtan2(p.z(), std::sqrt(p.x() * p.x() + p.y() * p.y())); }
 
 	int n_cols_;
 	std::vector<float> ring_elevation_;  ///< mean elevation of each ring's returns [rad]

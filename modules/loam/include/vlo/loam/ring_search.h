@@ -39,6 +39,8 @@ class RingSearch
 		float x, y, z;  ///< the point (a copy: no indirection in the search loop)
 		int index;  ///< into the indexed points
 	};
+	static void sortByAzimuth(Entry* b, int n);
+
 	const ScanPoints* points_ = nullptr;
 	int n_rings_ = 0;
 	std::vector<Entry> entries_;  ///< ring by ring, each sorted by azimuth

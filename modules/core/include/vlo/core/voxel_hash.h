@@ -45,6 +45,11 @@ class VoxelHash
 			if (s.key == kEmpty) return kNone;
 		}
 	}
+	/// Asks the CPU to fetch key's home slot, ahead of a lookup of it.
+	void prefetch(std::uint64_t key) const
+	{
+		if (!slots_.empty()) __builtin_prefetch(&slots_[slotOf(key)]);
+	}
 	/// Inserts (key, value) unless key is present; returns the stored value and whether it is new.
 	std::pair<std::uint32_t, bool> insert(std::uint64_t key, std::uint32_t value);
 	/// Removes key if present.

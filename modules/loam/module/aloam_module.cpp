@@ -18,7 +18,14 @@ class AloamModule : public LidarOdometryModule
 		opt_.prior.source = "external";
 		for (const auto& [section, options] : opt_.parts()) config.load(*options, section);
 		lo_ = std::make_unique<loam::LidarOdometry>(opt_);  // validates the options
+		ahead_.emplace(opt_);
 		ring_check_.emplace(config.origin(), opt_.scan, loam::RingModel(opt_.scan).elevationsDeg());
+	}
+
+	// The scan's rings and features (its own extractor: prepare and process may run on two threads).
+	void prepare(Frame& frame) override
+	{
+		frame.lidar_prepared = std::make_shared<loam::ScanFeatures>(ahead_->extract(frame.scan));
 	}
 
 	Eigen::Isometry3d process(
@@ -26,7 +33,9 @@ class AloamModule : public LidarOdometryModule
 	{
 		mount_.observe(frame);
 		ring_check_->observe(frame.scan);
-		const auto r = lo_->process(frame.t, frame.scan, mount_.lidarMotion(vehicle_motion));
+		const auto motion = mount_.lidarMotion(vehicle_motion);
+		const auto* ahead = std::any_cast<std::shared_ptr<loam::ScanFeatures>>(&frame.lidar_prepared);
+		const auto r = ahead && *ahead ? lo_->process(frame.t, std::move(**ahead), motion) : lo_->process(frame.t, frame.scan, motion);
 
 		table.set("lo_status", std::string(loam::toString(r.status)));
 		table.set("lo_prior", r.prior_source);
@@ -56,6 +65,7 @@ class AloamModule : public LidarOdometryModule
    private:
 	loam::LoamOptions opt_;
 	std::unique_ptr<loam::LidarOdometry> lo_;
+	std::optional<loam::ScanFeatureExtractor> ahead_;
 	std::optional<loam::RingModelCheck> ring_check_;
 	LidarMount mount_;
 };

@@ -21,9 +21,8 @@ const char* toString(FrameStatus s)
 
 LidarOdometry::LidarOdometry(const LoamOptions& o)
 	: opt_((o.validate(), o)),
-	  pre_(o.scan),
-	  extractor_(o.features),
-	  odometry_(o.odometry, pre_.model()),
+	  features_(o),
+	  odometry_(o.odometry, features_.model()),
 	  mapper_(o.mapping),
 	  prior_(makeMotionPrior(o.prior))
 {
@@ -116,31 +115,35 @@ void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, E
 LidarOdometryResult LidarOdometry::process(
 	double t, const PointCloud& scan, const std::optional<Eigen::Isometry3d>& prior_motion)
 {
+	return process(t, features_.extract(scan), prior_motion);
+}
+
+LidarOdometryResult LidarOdometry::process(
+	double t, ScanFeatures&& scan, const std::optional<Eigen::Isometry3d>& prior_motion)
+{
 	LidarOdometryResult r;
 	r.t = t;
 	auto t0 = SteadyClock::now();
 	r.guess = frames_ ? prior_->predict(t, prior_motion) : Eigen::Isometry3d::Identity();
 	r.prior_source = frames_ ? prior_->lastSource() : "none";
 
-	const RingScan rs = pre_.process(scan);
-	r.n_input = scan.size();
-	r.n_valid = rs.points.size();
-	r.n_rings = rs.populatedRings(1);
-	r.ms.add("features", lapMs(t0));
-	if (rs.points.empty())
-		return skip(r, "no usable points (" + std::to_string(scan.size()) + " given: " + std::to_string(rs.n_invalid) +
-				" invalid, " + std::to_string(rs.n_out_of_range) + " out of range, " + std::to_string(rs.n_out_of_fov) +
+	r.n_input = scan.n_input;
+	r.n_valid = scan.n_valid;
+	r.n_rings = scan.n_rings;
+	r.ms.add("features", scan.ms + lapMs(t0));
+	if (scan.n_valid == 0)
+		return skip(r, "no usable points (" + std::to_string(scan.n_input) + " given: " + std::to_string(scan.n_invalid) +
+				" invalid, " + std::to_string(scan.n_out_of_range) + " out of range, " + std::to_string(scan.n_out_of_fov) +
 				" out of the vertical field of view)");
 	if (r.n_rings < opt_.features.min_rings)
 		return skip(r, "only " + std::to_string(r.n_rings) + " populated rings (min_rings " +
 				std::to_string(opt_.features.min_rings) + ")");
 
-	FeatureSet raw = extractor_.extract(rs);
+	FeatureSet raw = std::move(scan.features);
 	r.n_sharp = raw.sharp.size();
 	r.n_less_sharp = raw.less_sharp.size();
 	r.n_flat = raw.flat.size();
 	r.n_less_flat = raw.less_flat.size();
-	r.ms.add("features", lapMs(t0));
 	if (static_cast<int>(raw.sharp.size()) < opt_.features.min_sharp || static_cast<int>(raw.flat.size()) < opt_.features.min_flat)
 		return skip(r, "too few features (" + std::to_string(raw.sharp.size()) + " sharp, " + std::to_string(raw.flat.size()) + " flat)");
 
@@ -149,7 +152,7 @@ LidarOdometryResult LidarOdometry::process(
 	// the start, when the guess knows nothing, and when the motion changes). The map and the next
 	// scan get the features undistorted by the final motion. The sensor's per-point times are
 	// always used (point_times); times from the azimuth only with deskew.
-	const bool deskewable = opt_.scan.deskew || rs.times_from_data;
+	const bool deskewable = opt_.scan.deskew || scan.times_from_data;
 	const bool undistort = deskewable && frames_ && t_prev_ && t > *t_prev_;
 	const auto deskewed = [&](const FeatureSet& src, const Eigen::Isometry3d& motion) {
 		// The motion spans the time since the previous frame; deskewing needs one sweep's.

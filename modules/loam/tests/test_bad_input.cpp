@@ -71,6 +71,27 @@ TEST(BadInput, SkippedWithAReasonNeverThrown)
 	EXPECT_TRUE(lo.mapPoints().empty());
 }
 
+// vlo-run computes a scan's features ahead on the reader's thread (ScanFeatureExtractor) and hands
+// them to process: the same poses to the bit as from the scan, bad frames included.
+TEST(BadInput, FeaturesComputedAheadGiveTheSamePoses)
+{
+	const Drive d;
+	LidarOdometry from_scans(vlp16Options()), from_features(vlp16Options());
+	ScanFeatureExtractor ahead(vlp16Options());
+	for (int i = 0; i <= 8; ++i)
+	{
+		const PointCloud scan = i == 3 ? PointCloud() : d.scanAt(i);
+		const double t = 0.1 * i;
+		const LidarOdometryResult a = from_scans.process(t, scan, std::nullopt);
+		const LidarOdometryResult b = from_features.process(t, ahead.extract(scan), std::nullopt);
+		EXPECT_EQ(a.status, b.status) << "frame " << i;
+		EXPECT_EQ(a.reason, b.reason);
+		EXPECT_EQ(a.n_valid, b.n_valid);
+		EXPECT_EQ(a.pose.matrix(), b.pose.matrix()) << "frame " << i;
+	}
+	EXPECT_EQ(from_scans.mapPoints(), from_features.mapPoints());
+}
+
 TEST(BadInput, TrackingResumesAfterBadFrames)
 {
 	const Drive d;

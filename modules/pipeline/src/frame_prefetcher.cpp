@@ -2,8 +2,8 @@
 
 namespace vlo
 {
-FramePrefetcher::FramePrefetcher(RawlogReader& reader, std::size_t ahead, std::size_t limit)
-	: reader_(reader), ahead_(ahead), limit_(limit)
+FramePrefetcher::FramePrefetcher(RawlogReader& reader, std::size_t ahead, std::size_t limit, std::function<void(Frame&)> prepare)
+	: reader_(reader), ahead_(ahead), limit_(limit), prepare_(std::move(prepare))
 {
 	if (ahead_ > 0) thread_ = std::thread([this] { readAhead(); });
 }
@@ -26,6 +26,7 @@ bool FramePrefetcher::readOne(Frame& frame)
 	if (!reader_.next(frame)) return false;
 	++read_;
 	progress_ = reader_.progress();
+	if (prepare_) prepare_(frame);
 	return true;
 }
 

@@ -47,6 +47,11 @@ class LidarOdometryModule
 	virtual ~LidarOdometryModule() = default;
 	/// Loads and validates this module's options from the run configuration.
 	virtual void configure(RunConfig& config) = 0;
+	/// Work on the frame alone, ahead of process, maybe on another thread (the run's reader); it
+	/// leaves its result in frame.lidar_prepared for process. Called once per frame, in frame order,
+	/// from one thread at a time; it must touch nothing process uses, so that the results are the
+	/// same whichever thread runs it. Default: nothing ahead.
+	virtual void prepare(Frame& /*frame*/) {}
 	/// `vehicle_motion` is an external guess of the vehicle's motion since the previous frame, in
 	/// metres (pose of the current vehicle frame in the previous one), or nullopt: the module then
 	/// predicts on its own. Returns the vehicle pose relative to the vehicle at the first frame.

@@ -13,6 +13,7 @@
 #include <vlo/loam/odometry.h>
 #include <vlo/loam/options.h>
 #include <vlo/loam/rings.h>
+#include <vlo/loam/scan_features.h>
 
 #include <Eigen/Geometry>
 #include <memory>
@@ -64,6 +65,9 @@ class LidarOdometry
 	/// the motion since the previous frame (the pose of this LiDAR frame in the previous one);
 	/// the ConstantVelocity prior ignores it. Never throws on bad data: see status and reason.
 	LidarOdometryResult process(double t, const PointCloud& scan, const std::optional<Eigen::Isometry3d>& prior_motion);
+	/// The same from the scan's features computed ahead (a ScanFeatureExtractor with the same
+	/// options): identical results. The features are consumed.
+	LidarOdometryResult process(double t, ScanFeatures&& scan, const std::optional<Eigen::Isometry3d>& prior_motion);
 
 	void reset();
 	std::size_t frames() const { return frames_; }
@@ -80,8 +84,7 @@ class LidarOdometry
 	void restartFromFirst(const FeatureSet& first);
 
 	LoamOptions opt_;
-	ScanPreprocessor pre_;
-	FeatureExtractor extractor_;
+	ScanFeatureExtractor features_;
 	ScanToScanOdometry odometry_;
 	ScanToMap mapper_;
 	std::unique_ptr<MotionPrior> prior_;

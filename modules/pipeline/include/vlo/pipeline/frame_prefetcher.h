@@ -1,6 +1,7 @@
 #pragma once
 // Reads frames ahead on a thread of its own while the run loop processes the current one, so that
-// rawlog parsing and image decoding overlap the estimators. The queue is bounded (memory stays flat),
+// rawlog parsing, image decoding and the work done on a frame alone (a LiDAR odometry's features)
+// overlap the estimators. The queue is bounded (memory stays flat),
 // frames and the reader's error come out in file order, and no frame past the limit is read: a run
 // sees exactly what reading on its own thread would give it, the reader's statistics included.
 #include <vlo/io/rawlog_reader.h>
@@ -10,6 +11,7 @@
 #include <cstddef>
 #include <deque>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 
@@ -19,8 +21,9 @@ class FramePrefetcher
 {
    public:
 	/// `ahead` = frames read in advance (0: no thread, next() reads on the caller's thread);
-	/// `limit` = frames to read at most (0 = all).
-	FramePrefetcher(RawlogReader& reader, std::size_t ahead, std::size_t limit);
+	/// `limit` = frames to read at most (0 = all); `prepare`, if given, runs on each frame read,
+	/// on the reading thread.
+	FramePrefetcher(RawlogReader& reader, std::size_t ahead, std::size_t limit, std::function<void(Frame&)> prepare = {});
 	/// Stops reading and waits for the thread.
 	~FramePrefetcher();
 	FramePrefetcher(const FramePrefetcher&) = delete;
@@ -39,6 +42,7 @@ class FramePrefetcher
 
 	RawlogReader& reader_;
 	const std::size_t ahead_, limit_;
+	const std::function<void(Frame&)> prepare_;
 	std::size_t read_ = 0;  ///< frames taken from the reader
 	std::atomic<double> progress_{0};
 	std::mutex mutex_;

@@ -14,7 +14,8 @@ namespace vlo
 class GlobalMap
 {
    public:
-	/// About 200 MB with the voxel index; a 400 m urban drive holds about 1M at 0.2 m.
+	/// 200-320 MB with the voxel index (16 bytes a point, 32-64 in the at most half-full hash); a
+	/// 400 m urban drive holds about 1M at 0.2 m.
 	static constexpr std::size_t kDefaultMaxPoints = 4'000'000;
 
 	/// leaf: voxel edge [m] (> 0); max_range: scan points farther from the sensor are not added.

@@ -1,6 +1,5 @@
 #include "vlo/loam/free_space.h"
 
-
 #include <algorithm>
 #include <cmath>
 
@@ -48,31 +47,9 @@ void FreeSpace::finish()
 			by_elevation_.emplace_back(ring_elevation_[i], i);
 		}
 	std::sort(by_elevation_.begin(), by_elevation_.end());
-
-	// Each slice starts at the first ring at or above a point a little below the slice (the margin
-	// covers the rounding of a query's slice index), so the walk in firstRingFrom is exact.
-	if (by_elevation_.empty()) return;
-	lut_lo_ = by_elevation_.front().first;
-	const float span = by_elevation_.back().first - lut_lo_;
-	lut_scale_ = span > 0 ? static_cast<float>(kLutSlices) / span : 0.0f;
-	if (lut_scale_ == 0) return;
-	lut_.resize(kLutSlices + 1);
-	for (int s = 0; s <= kLutSlices; ++s)
-	{
-		const float start = lut_lo_ + (static_cast<float>(s) - 1e-3f) / lut_scale_;
-		lut_[static_cast<std::size_t>(s)] = static_cast<std::size_t>(
-			std::lower_bound(by_elevation_.begin(), by_elevation_.end(), std::make_pair(start, std::size_t{0})) - by_elevation_.begin());
-	}
-}
-
-std::size_t FreeSpace::firstRingFrom(float x) const
-{
-	const std::size_t n = by_elevation_.size();
-	std::size_t i = 0;
-	if (x > lut_lo_)
-		i = lut_.empty() ? n : lut_[static_cast<std::size_t>(std::min(static_cast<float>(kLutSlices), (x - lut_lo_) * lut_scale_))];
-	while (i < n && by_elevation_[i].first < x) ++i;
-	return i;
+	std::vector<float> elevations;
+	for (const auto& [e, ring] : by_elevation_) elevations.push_back(e);
+	elevations_ = SliceTable(std::move(elevations));
 }
 
 bool FreeSpace::seenThrough(const Eigen::Vector3f& q, float beam_radius, float margin, float margin_per_metre) const
@@ -82,7 +59,7 @@ bool FreeSpace::seenThrough(const Eigen::Vector3f& q, float beam_radius, float m
 	const float elevation = elevationOf(q), tolerance = beam_radius / r;
 	const float beyond = r + margin + margin_per_metre * r;
 	// The rings whose elevation is within the tolerance of q's (most points: none).
-	auto it = by_elevation_.begin() + static_cast<std::ptrdiff_t>(firstRingFrom(elevation - tolerance));
+	auto it = by_elevation_.begin() + static_cast<std::ptrdiff_t>(elevations_.lowerBound(elevation - tolerance));
 	if (it == by_elevation_.end() || it->first > elevation + tolerance) return false;
 	const std::size_t col = static_cast<std::size_t>(column(q));
 	for (; it != by_elevation_.end() && it->first <= elevation + tolerance; ++it)

@@ -41,46 +41,28 @@ RingModel::RingModel(const ScanOptions& o)
 	std::sort(elevations_deg_.begin(), elevations_deg_.end());
 	elevations_deg_.erase(std::unique(elevations_deg_.begin(), elevations_deg_.end()), elevations_deg_.end());
 
+	std::vector<float> tan_bounds;  // tan of the midpoints between consecutive beams
 	for (std::size_t k = 0; k + 1 < elevations_deg_.size(); ++k)
-		tan_bounds_.push_back(static_cast<float>(std::tan(0.5 * (elevations_deg_[k] + elevations_deg_[k + 1]) * kDeg)));
+		tan_bounds.push_back(static_cast<float>(std::tan(0.5 * (elevations_deg_[k] + elevations_deg_[k + 1]) * kDeg)));
+	tan_bounds_ = SliceTable(std::move(tan_bounds));
 	const double lo = std::max(-89.9, elevations_deg_.front() - o.fov_margin_deg);
 	const double hi = std::min(89.9, elevations_deg_.back() + o.fov_margin_deg);
 	tan_lo_ = static_cast<float>(std::tan(lo * kDeg));
 	tan_hi_ = static_cast<float>(std::tan(hi * kDeg));
-
-	// A slice gets a ring only if the search gives it at both ends widened by far more than the
-	// rounding of the slice index, so the table never disagrees with the search.
-	if (!(tan_hi_ > tan_lo_)) return;  // a single beam without margin: search (lut_ stays empty)
-	lut_scale_ = static_cast<float>(kLutBins) / (tan_hi_ - tan_lo_);
-	const double width = 1.0 / lut_scale_, guard = 1e-3 * width;
-	lut_.resize(kLutBins);
-	for (int b = 0; b < kLutBins; ++b)
-	{
-		const int r0 = searchRing(static_cast<float>(tan_lo_ + b * width - guard));
-		const int r1 = searchRing(static_cast<float>(tan_lo_ + (b + 1) * width + guard));
-		lut_[b] = static_cast<std::int16_t>(r0 == r1 ? r0 : -1);
-	}
-}
-
-int RingModel::searchRing(float t) const
-{
-	return static_cast<int>(std::upper_bound(tan_bounds_.begin(), tan_bounds_.end(), t) - tan_bounds_.begin());
 }
 
 int RingModel::ringOf(float z, float rho) const
 {
 	const float t = z / rho;
 	if (!(t >= tan_lo_ && t <= tan_hi_)) return -1;  // also rejects NaN (rho = z = 0)
-	if (lut_.empty()) return searchRing(t);
-	const int r = lut_[std::min(static_cast<int>((t - tan_lo_) * lut_scale_), kLutBins - 1)];
-	return r >= 0 ? r : searchRing(t);
+	return static_cast<int>(tan_bounds_.upperBound(t));
 }
 
 int RingModel::nearestRing(float z, float rho) const
 {
 	const float t = z / rho;
 	if (std::isnan(t)) return -1;
-	return searchRing(t);
+	return static_cast<int>(tan_bounds_.upperBound(t));
 }
 
 int RingScan::populatedRings(std::size_t min_points) const

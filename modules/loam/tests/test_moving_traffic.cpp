@@ -5,10 +5,7 @@
 #include <vlo/loam/lidar_odometry.h>
 #include <vlo/loam/near_points.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <vector>
 
 #include "synthetic_world.h"
 #include "test_helpers.h"
@@ -91,34 +88,6 @@ TEST(MovingTraffic, FreeSpaceIsWhereBeamsPassedAndTheGroundIsNot)
 	for (float x = 4; x < 24; x += 0.05f)
 		for (float y : {-2.0f, -0.7f, 0.0f, 0.3f, 1.9f}) EXPECT_FALSE(through(Eigen::Vector3f(x, y, -1.73f))) << x << " " << y;
 }
-// The table behind firstRingFrom never disagrees with a binary search: every ring's elevation and
-// its float neighbours, and a dense sweep beyond both ends (HDL-64 and VLP-16 scans).
-TEST(MovingTraffic, FreeSpaceRingLookupAgreesWithTheSearch)
-{
-	World w;
-	w.boxes.push_back(Box{Eigen::Vector3d(26, 0, 5), Eigen::Vector3d(1, 40, 5), 0.0});
-	const Eigen::Isometry3d pose(Eigen::Translation3d(0, 0, 1.73));
-	for (const auto& lidar : {hdl64(), vlp16()})
-	{
-		const FreeSpace free(scanPoints(scan(w, lidar, pose)), 900);
-		const auto& rings = free.ringsByElevation();
-		ASSERT_GT(rings.size(), 10u);
-		std::vector<float> xs;
-		for (const auto& [e, ring] : rings)
-		{
-			float x = e;
-			for (int i = 0; i < 3; ++i) x = std::nextafter(x, -10.0f);
-			for (int i = 0; i < 7; ++i, x = std::nextafter(x, 10.0f)) xs.push_back(x);
-		}
-		for (int i = 0; i <= 100000; ++i) xs.push_back(-1.0f + 1.5f * static_cast<float>(i) / 100000.0f);
-		for (float x : xs)
-		{
-			const auto expected = std::lower_bound(rings.begin(), rings.end(), std::make_pair(x, std::size_t{0})) - rings.begin();
-			ASSERT_EQ(free.firstRingFrom(x), static_cast<std::size_t>(expected)) << "elevation " << x;
-		}
-	}
-}
-
 TEST(MovingTraffic, NearPointsWithinTheRadiusOnly)
 {
 	const NearPoints near({Eigen::Vector3f(0, 0, 0), Eigen::Vector3f(10, 0, 0)}, 1.0f);

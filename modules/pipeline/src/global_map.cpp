@@ -7,12 +7,8 @@ namespace vlo
 {
 std::uint64_t GlobalMap::key(const Eigen::Vector3f& w) const
 {
-	// 21 bits per axis: +-200 km at 0.2 m voxels (never all 64 bits set: VoxelHash's empty key).
 	const float leaf = static_cast<float>(leaf_);
-	const auto cell = [&](float v) {
-		return static_cast<std::uint64_t>(fastFloor(v / leaf)) & 0x1FFFFF;
-	};
-	return (cell(w.x()) << 42) | (cell(w.y()) << 21) | cell(w.z());
+	return voxelKey(Eigen::Vector3i(fastFloor(w.x() / leaf), fastFloor(w.y() / leaf), fastFloor(w.z() / leaf)));
 }
 
 void GlobalMap::insert(const PointCloud& scan, const Eigen::Isometry3d& world_T_lidar)

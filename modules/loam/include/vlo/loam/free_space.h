@@ -4,13 +4,12 @@
 // The scan is binned by ring and azimuth; each bin keeps its nearest return, so only space that
 // every return of the bin crossed counts as free.
 #include <vlo/loam/rings.h>
+#include <vlo/loam/slice_table.h>
 #include <vlo/loam/types.h>
 
 #include <Eigen/Core>
-
 #include <algorithm>
 #include <cmath>
-
 #include <utility>
 #include <vector>
 
@@ -29,12 +28,6 @@ class FreeSpace
 	/// |q| * beam_radius / sensor height farther on.
 	bool seenThrough(const Eigen::Vector3f& q, float beam_radius, float margin, float margin_per_metre) const;
 
-	/// (mean elevation [rad], ring) of the populated rings, ascending.
-	const std::vector<std::pair<float, std::size_t>>& ringsByElevation() const { return by_elevation_; }
-	/// Index in ringsByElevation of the first ring whose elevation is at least x: a std::lower_bound,
-	/// but through a table of kLutSlices slices of the rings' span (every map point near the vehicle asks).
-	std::size_t firstRingFrom(float x) const;
-
    private:
 	void add(const ScanPoints& points);
 	void finish();
@@ -47,13 +40,11 @@ class FreeSpace
 	/// atan2 of the height over the horizontal range: asin(z / r) without asin's cost.
 	static float elevationOf(const Eigen::Vector3f& p) { return fastAtan2(p.z(), std::sqrt(p.x() * p.x() + p.y() * p.y())); }
 
-	static constexpr int kLutSlices = 512;
 	int n_cols_;
 	std::vector<float> ring_elevation_;  ///< mean elevation of each ring's returns [rad]
 	std::vector<int> ring_count_;
 	std::vector<std::pair<float, std::size_t>> by_elevation_;  ///< (elevation, ring) of populated rings, ascending
 	std::vector<Eigen::Vector4f> bins_;  ///< (unit direction, range) of the nearest return; range 0: none
-	float lut_lo_ = 0, lut_scale_ = 0;  ///< lowest ring elevation; slices per radian
-	std::vector<std::size_t> lut_;  ///< per slice: the first ring at or above its start
+	SliceTable elevations_;  ///< by_elevation_'s elevations (every map point near the vehicle looks its rings up)
 };
 }  // namespace vlo::loam

@@ -5,10 +5,10 @@
 // time from the azimuth.
 #include <vlo/core/frame.h>
 #include <vlo/loam/options.h>
+#include <vlo/loam/slice_table.h>
 #include <vlo/loam/types.h>
 
 #include <cmath>
-#include <cstdint>
 #include <vector>
 
 namespace vlo::loam
@@ -39,15 +39,9 @@ class RingModel
 
    private:
 	std::vector<double> elevations_deg_;
-	int searchRing(float t) const;  ///< the ring of tan(elevation) t by binary search
-
-	std::vector<float> tan_bounds_;  ///< tan of the midpoints between consecutive beams
+	/// tan of the midpoints between consecutive beams (ringOf runs for every return)
+	SliceTable tan_bounds_;
 	float tan_lo_ = 0, tan_hi_ = 0;  ///< accepted range, margin included
-	/// The ring of each of kLutBins equal slices of [tan_lo, tan_hi], or -1 where a bound falls in the
-	/// slice (search there): ringOf runs for every return, and the search's branches mispredict.
-	static constexpr int kLutBins = 4096;
-	float lut_scale_ = 0;
-	std::vector<std::int16_t> lut_;
 };
 
 /// atan2 with |error| < 2e-5 rad, a few times faster than std::atan2.

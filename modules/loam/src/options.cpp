@@ -10,10 +10,9 @@ namespace
 void declareSolver(OptionTable& t, SolverOptions& o)
 {
 	t.add("outer_iterations", o.outer_iterations, ">= 1", "correspondence search + solve rounds");
-	t.add("max_solver_iterations", o.max_solver_iterations, ">= 1", "Ceres iterations per round");
+	t.add("max_solver_iterations", o.max_solver_iterations, ">= 1", "reweighted Levenberg-Marquardt iterations per round");
 	t.add("loss", o.loss, "huber | cauchy | none", "robust loss: huber | cauchy | none");
 	t.add("loss_scale", o.loss_scale, "> 0", "residual [m] where the robust loss bends");
-	t.add("matches_per_block", o.matches_per_block, "[1, 4096]", "matches per Ceres residual block (1: Ceres applies the loss per match; >1: the same robust steps by reweighting each iteration, less overhead)");
 	t.add("converged_translation", o.converged_translation, ">= 0", "a round moving less ends the rounds [m]");
 	t.add("converged_rotation_deg", o.converged_rotation_deg, ">= 0", "... and turning less [deg]");
 }

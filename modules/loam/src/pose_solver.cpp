@@ -1,32 +1,32 @@
 #include "vlo/loam/pose_solver.h"
 
-#include <ceres/ceres.h>
-#include <vlo/loam/factors.h>
-
-#include <algorithm>
 #include <cmath>
-#include <deque>
-#include <memory>
+#include <vector>
 
 namespace vlo::loam
 {
 namespace
 {
-std::unique_ptr<ceres::LossFunction> makeLoss(const SolverOptions& o)
+/// The robust loss rho of a squared residual s, as its IRLS weight rho'(s): Huber rho(s) = s inside
+/// the scale a, 2 a sqrt(s) - a^2 outside; Cauchy rho(s) = a^2 log(1 + s / a^2); none rho(s) = s.
+class RobustWeight
 {
-	if (o.loss == "huber") return std::make_unique<ceres::HuberLoss>(o.loss_scale);
-	if (o.loss == "cauchy") return std::make_unique<ceres::CauchyLoss>(o.loss_scale);
-	return nullptr;
-}
+   public:
+	explicit RobustWeight(const SolverOptions& o)
+		: kind_(o.loss == "huber" ? Huber : o.loss == "cauchy" ? Cauchy : None), a_(o.loss_scale), a2_(a_ * a_), inv_a2_(1.0 / a2_)
+	{
+	}
+	double operator()(double s) const
+	{
+		if (kind_ == Huber) return s > a2_ ? a_ / std::sqrt(s) : 1.0;
+		if (kind_ == Cauchy) return 1.0 / (1.0 + s * inv_a2_);
+		return 1.0;
+	}
 
-/// IRLS weight rho'(s) of the robust loss at squared residual s (1 without a loss).
-double robustWeight(const ceres::LossFunction* loss, double s)
-{
-	if (!loss) return 1.0;
-	double rho[3];
-	loss->Evaluate(s, rho);
-	return rho[1];
-}
+   private:
+	enum Kind { None, Huber, Cauchy } kind_;
+	double a_, a2_, inv_a2_;
+};
 
 Eigen::Vector3d edgeResidual(const EdgeMatch& e, const Eigen::Isometry3d& T)
 {
@@ -42,6 +42,108 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v)
 	m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
 	return m;
 }
+
+/// The weight of each match at T; returns the sum of the squared distances.
+double weigh(const std::vector<EdgeMatch>& edges, const std::vector<PlaneMatch>& planes, const RobustWeight& weight,
+	const Eigen::Isometry3d& T, std::vector<double>& we, std::vector<double>& wp)
+{
+	double sum2 = 0;
+	we.resize(edges.size());
+	wp.resize(planes.size());
+	for (std::size_t i = 0; i < edges.size(); ++i)
+	{
+		const double s = edgeResidual(edges[i], T).squaredNorm();
+		we[i] = weight(s);
+		sum2 += s;
+	}
+	for (std::size_t i = 0; i < planes.size(); ++i)
+	{
+		const double s = std::pow(planeResidual(planes[i], T), 2);
+		wp[i] = weight(s);
+		sum2 += s;
+	}
+	return sum2;
+}
+
+/// Weighted normal equations of the matches at T over the tangent [rotation (left), translation]:
+/// J^T W J, J^T W r and the weighted cost 1/2 sum w r^2.
+struct NormalEquations
+{
+	Eigen::Matrix<double, 6, 6> H = Eigen::Matrix<double, 6, 6>::Zero();
+	Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
+	double cost = 0;
+};
+
+NormalEquations normalEquations(const std::vector<EdgeMatch>& edges, const std::vector<PlaneMatch>& planes,
+	const std::vector<double>& we, const std::vector<double>& wp, const Eigen::Isometry3d& T)
+{
+	NormalEquations ne;
+	const Eigen::Matrix3d& R = T.linear();
+	Eigen::Matrix<double, 3, 6> J;
+	for (std::size_t i = 0; i < edges.size(); ++i)
+	{
+		const EdgeMatch& e = edges[i];
+		const Eigen::Vector3d Rp = R * e.p;
+		const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - e.u * e.u.transpose();
+		const Eigen::Vector3d r = P * (Rp + T.translation() - e.a);
+		J.leftCols<3>() = -P * skew(Rp);
+		J.rightCols<3>() = P;
+		ne.H.noalias() += we[i] * J.transpose() * J;
+		ne.g.noalias() += we[i] * J.transpose() * r;
+		ne.cost += 0.5 * we[i] * r.squaredNorm();
+	}
+	Eigen::Matrix<double, 6, 1> j;
+	for (std::size_t i = 0; i < planes.size(); ++i)
+	{
+		const PlaneMatch& p = planes[i];
+		const Eigen::Vector3d Rp = R * p.p;
+		const double r = p.n.dot(Rp + T.translation()) + p.d;
+		j.head<3>() = Rp.cross(p.n);
+		j.tail<3>() = p.n;
+		ne.H.noalias() += (wp[i] * j) * j.transpose();
+		ne.g.noalias() += (wp[i] * r) * j;
+		ne.cost += 0.5 * wp[i] * r * r;
+	}
+	return ne;
+}
+
+double weightedCost(const Matches& m, const std::vector<double>& we, const std::vector<double>& wp, const Eigen::Isometry3d& T)
+{
+	double c = 0;
+	for (std::size_t i = 0; i < m.edges.size(); ++i) c += we[i] * edgeResidual(m.edges[i], T).squaredNorm();
+	for (std::size_t i = 0; i < m.planes.size(); ++i) c += wp[i] * std::pow(planeResidual(m.planes[i], T), 2);
+	return 0.5 * c;
+}
+
+/// Iteratively reweighted least squares: each iteration weighs the matches by rho'(s) at the current
+/// pose and takes one Levenberg-Marquardt step on the weighted squares (Marquardt's damping at 1e-4
+/// of the diagonal), kept only where the cost drops as the model predicts. Returns the iterations.
+int solveReweighted(const Matches& m, const SolverOptions& o, Eigen::Isometry3d& T)
+{
+	const RobustWeight weight(o);
+	std::vector<double> we, wp;
+	// Poses composed over many frames drift off SO(3), and a transposed inverse amplifies that.
+	T.linear() = Eigen::Quaterniond(T.linear()).normalized().toRotationMatrix();
+	int it = 0;
+	while (it < o.max_solver_iterations)
+	{
+		++it;
+		weigh(m.edges, m.planes, weight, T, we, wp);
+		const NormalEquations ne = normalEquations(m.edges, m.planes, we, wp, T);
+		Eigen::Matrix<double, 6, 6> A = ne.H;
+		A.diagonal() += 1e-4 * ne.H.diagonal().cwiseMax(1e-6);
+		const Eigen::Matrix<double, 6, 1> d = -A.ldlt().solve(ne.g);
+		if (!d.allFinite()) break;
+		Eigen::Isometry3d next = T;
+		next.linear() = (Eigen::AngleAxisd(d.head<3>().norm(), d.head<3>().normalized()) * Eigen::Quaterniond(T.linear())).normalized().toRotationMatrix();
+		next.translation() += d.tail<3>();
+		const double predicted = -(ne.g.dot(d) + 0.5 * d.dot(ne.H * d)), cost = weightedCost(m, we, wp, next);
+		if (!(predicted > 0) || ne.cost - cost < 1e-3 * predicted) break;
+		T = next;
+		if (ne.cost - cost <= 1e-6 * ne.cost) break;  // converged: the weights would not change either
+	}
+	return it;
+}
 }  // namespace
 
 bool roundConverged(const Eigen::Isometry3d& before, const Eigen::Isometry3d& after, const SolverOptions& o)
@@ -54,32 +156,10 @@ bool roundConverged(const Eigen::Isometry3d& before, const Eigen::Isometry3d& af
 void evaluateMatches(const std::vector<EdgeMatch>& edges, const std::vector<PlaneMatch>& planes, const SolverOptions& o,
 	const Eigen::Isometry3d& T, Eigen::Matrix<double, 6, 6>& JtJ, double& rms)
 {
-	const auto loss = makeLoss(o);
-	const Eigen::Matrix3d R = T.rotation();
-	JtJ.setZero();
-	double sum2 = 0;
 	// Weighted as in the solve, so outliers count as little there as here.
-	Eigen::Matrix<double, 3, 6> J;
-	for (const EdgeMatch& e : edges)
-	{
-		const Eigen::Vector3d Rp = R * e.p;
-		const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - e.u * e.u.transpose();
-		const double s = edgeResidual(e, T).squaredNorm();
-		J.leftCols<3>() = -P * skew(Rp);
-		J.rightCols<3>() = P;
-		JtJ += robustWeight(loss.get(), s) * J.transpose() * J;
-		sum2 += s;
-	}
-	for (const PlaneMatch& p : planes)
-	{
-		const Eigen::Vector3d Rp = R * p.p;
-		const double r = planeResidual(p, T);
-		Eigen::Matrix<double, 1, 6> j;
-		j.leftCols<3>() = -p.n.transpose() * skew(Rp);
-		j.rightCols<3>() = p.n.transpose();
-		JtJ += robustWeight(loss.get(), r * r) * j.transpose() * j;
-		sum2 += r * r;
-	}
+	std::vector<double> we, wp;
+	const double sum2 = weigh(edges, planes, RobustWeight(o), T, we, wp);
+	JtJ = normalEquations(edges, planes, we, wp, T).H;
 	const std::size_t n = edges.size() + planes.size();
 	rms = n ? std::sqrt(sum2 / static_cast<double>(n)) : 0.0;
 }
@@ -88,77 +168,7 @@ SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3
 {
 	SolveReport rep;
 	if (m.size() == 0) return rep;
-	Eigen::Quaterniond q0(T.rotation());
-	double q[4] = {q0.x(), q0.y(), q0.z(), q0.w()};
-	double t[3] = {T.translation().x(), T.translation().y(), T.translation().z()};
-
-	// Factors live here, not in the problem: block allocations instead of one per residual
-	// (a deque, because cost functions cannot be moved).
-	std::deque<EdgeFactor> edges;
-	std::deque<PlaneFactor> planes;
-	std::deque<BatchFactor> batches;
-	std::vector<double> we, wp;  // the batches' weights
-	const auto loss = makeLoss(o);
-	ceres::EigenQuaternionManifold manifold;
-
-	ceres::Problem::Options po;
-	po.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-	po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-	po.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-	po.enable_fast_removal = false;
-	po.disable_all_safety_checks = true;  // our blocks are well formed; saves a hash lookup each
-	ceres::Problem problem(po);
-	problem.AddParameterBlock(q, 4, &manifold);
-	problem.AddParameterBlock(t, 3);
-	const int B = o.matches_per_block;
-	const int ne = static_cast<int>(m.edges.size()), np = static_cast<int>(m.planes.size());
-	if (B <= 1)
-	{
-		for (const EdgeMatch& e : m.edges) problem.AddResidualBlock(&edges.emplace_back(e), loss.get(), q, t);
-		for (const PlaneMatch& p : m.planes) problem.AddResidualBlock(&planes.emplace_back(p), loss.get(), q, t);
-	}
-	else
-	{
-		we.resize(ne), wp.resize(np);
-		for (int i = 0; i < ne; i += B)
-			problem.AddResidualBlock(&batches.emplace_back(&m.edges[i], &we[i], std::min(B, ne - i), nullptr, nullptr, 0), nullptr, q, t);
-		for (int i = 0; i < np; i += B)
-			problem.AddResidualBlock(&batches.emplace_back(nullptr, nullptr, 0, &m.planes[i], &wp[i], std::min(B, np - i)), nullptr, q, t);
-	}
-
-	ceres::Solver::Options so;
-	so.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;  // 6 unknowns: normal equations are cheapest
-	so.num_threads = 1;
-	so.logging_type = ceres::SILENT;
-	so.minimizer_progress_to_stdout = false;
-	ceres::Solver::Summary summary;
-	if (B <= 1)
-	{
-		so.max_num_iterations = o.max_solver_iterations;
-		ceres::Solve(so, &problem, &summary);
-		rep.iterations = static_cast<int>(summary.num_successful_steps + summary.num_unsuccessful_steps);
-	}
-	else
-	{
-		// Batched: iteratively reweighted least squares. Each iteration weighs the matches by
-		// rho'(s) at the current pose and takes one least-squares step: Ceres' own step with the loss
-		// per block (its corrector for rho'' <= 0), and for Huber and Cauchy (rho concave in s) each
-		// reweighting lowers the robust cost.
-		so.max_num_iterations = 1;
-		for (int it = 0; it < o.max_solver_iterations; ++it)
-		{
-			const Eigen::Isometry3d Ti = Eigen::Translation3d(t[0], t[1], t[2]) * Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized();
-			for (int i = 0; i < ne; ++i) we[i] = robustWeight(loss.get(), edgeResidual(m.edges[i], Ti).squaredNorm());
-			for (int i = 0; i < np; ++i) wp[i] = robustWeight(loss.get(), std::pow(planeResidual(m.planes[i], Ti), 2));
-			ceres::Solve(so, &problem, &summary);
-			rep.iterations += static_cast<int>(summary.num_successful_steps + summary.num_unsuccessful_steps);
-			if (summary.termination_type == ceres::CONVERGENCE) break;  // the weights would not change
-		}
-	}
-	Eigen::Quaterniond qs(q[3], q[0], q[1], q[2]);
-	qs.normalize();
-	T.linear() = qs.toRotationMatrix();
-	T.translation() = Eigen::Vector3d(t[0], t[1], t[2]);
+	rep.iterations = solveReweighted(m, o, T);
 	evaluateMatches(m.edges, m.planes, o, T, rep.JtJ, rep.rms);
 	return rep;
 }

@@ -1,8 +1,6 @@
-// Residual factors (analytic Jacobians), the robust pose solver and degeneracy detection.
-#include <ceres/ceres.h>
+// The robust pose solver (its normal equations, convergence, outliers) and degeneracy detection.
 #include <gtest/gtest.h>
 #include <vlo/loam/degeneracy.h>
-#include <vlo/loam/factors.h>
 #include <vlo/loam/pose_solver.h>
 
 #include <random>
@@ -48,83 +46,100 @@ Matches syntheticMatches(const Eigen::Isometry3d& T, const std::vector<Eigen::Ve
 	return m;
 }
 
-// Central differences of a cost function's residuals with respect to both parameter blocks.
-void checkJacobians(const ceres::CostFunction& f, const double* q, const double* t)
+// The distances of all matches at T stacked (3 per edge: the vector from the line; 1 per plane).
+Eigen::VectorXd residuals(const Matches& m, const Eigen::Isometry3d& T)
 {
-	const int nr = f.num_residuals();
-	std::vector<double> r(nr), Jq(nr * 4), Jt(nr * 3), rp(nr), rm(nr);
-	const double* x[2] = {q, t};
-	double* J[2] = {Jq.data(), Jt.data()};
-	ASSERT_TRUE(f.Evaluate(x, r.data(), J));
-	for (int b = 0; b < 2; ++b)
-		for (int k = 0; k < (b ? 3 : 4); ++k)
-		{
-			double qq[4] = {q[0], q[1], q[2], q[3]}, tt[3] = {t[0], t[1], t[2]};
-			double* v = b ? tt : qq;
-			const double h = 1e-6, v0 = v[k];
-			v[k] = v0 + h;
-			const double* xp[2] = {qq, tt};
-			f.Evaluate(xp, rp.data(), nullptr);
-			v[k] = v0 - h;
-			f.Evaluate(xp, rm.data(), nullptr);
-			for (int i = 0; i < nr; ++i)
-				EXPECT_NEAR((b ? Jt[i * 3 + k] : Jq[i * 4 + k]), (rp[i] - rm[i]) / (2 * h), 1e-5) << "block " << b << " param " << k << " residual " << i;
-		}
+	Eigen::VectorXd r(3 * m.edges.size() + m.planes.size());
+	int row = 0;
+	for (const EdgeMatch& e : m.edges)
+	{
+		const Eigen::Vector3d d = T * e.p - e.a;
+		r.segment<3>(row) = d - e.u * e.u.dot(d);
+		row += 3;
+	}
+	for (const PlaneMatch& p : m.planes) r[row++] = p.n.dot(T * p.p) + p.d;
+	return r;
 }
 }  // namespace
 
-TEST(Solver, AnalyticJacobiansMatchNumeric)
+TEST(Solver, NormalMatrixIsTheGaussNewtonMatrixOfTheDistances)
 {
-	const Eigen::Quaterniond q(truePose().rotation());
-	const double qc[4] = {q.x(), q.y(), q.z(), q.w()}, t[3] = {0.3, -0.2, 1.0};
-	const Matches m = syntheticMatches(truePose(), {{0, 0, 1}, {1, 0.2, 0}}, true, 0.3, 1);
-	checkJacobians(EdgeFactor(m.edges[0]), qc, t);
-	checkJacobians(PlaneFactor(m.planes[0]), qc, t);
-	std::vector<double> we(5), wp(7);
-	for (int i = 0; i < 5; ++i) we[i] = 0.1 + 0.2 * i;
-	for (int i = 0; i < 7; ++i) wp[i] = 1.0 / (1 + i);
-	checkJacobians(BatchFactor(m.edges.data(), we.data(), 5, m.planes.data(), wp.data(), 7), qc, t);
-	checkJacobians(BatchFactor(m.edges.data(), nullptr, 5, m.planes.data(), nullptr, 7), qc, t);
+	// Without a loss, evaluateMatches' J^T J must be J^T J of the stacked distances, J by central
+	// differences over [rotation applied on the left, translation].
+	const Eigen::Isometry3d truth = truePose();
+	const Matches m = syntheticMatches(truth, {{0, 0, 1}, {1, 0.2, 0}}, true, 0.3, 1);
+	Eigen::Isometry3d T = truth * Eigen::Translation3d(0.3, -0.2, 0.1) * Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitY());
+	SolverOptions o;
+	o.loss = "none";
+	Eigen::Matrix<double, 6, 6> H;
+	double rms = 0;
+	evaluateMatches(m.edges, m.planes, o, T, H, rms);
+	Eigen::MatrixXd J(residuals(m, T).size(), 6);
+	const double h = 1e-6;
+	for (int k = 0; k < 6; ++k)
+	{
+		Eigen::Isometry3d Tp = T, Tm = T;
+		if (k < 3)
+		{
+			Tp.linear() = Eigen::AngleAxisd(h, Eigen::Vector3d::Unit(k)) * T.linear();
+			Tm.linear() = Eigen::AngleAxisd(-h, Eigen::Vector3d::Unit(k)) * T.linear();
+		}
+		else
+			Tp.translation()[k - 3] += h, Tm.translation()[k - 3] -= h;
+		J.col(k) = (residuals(m, Tp) - residuals(m, Tm)) / (2 * h);
+	}
+	const Eigen::MatrixXd JtJ = J.transpose() * J;
+	EXPECT_LT((H - JtJ).norm(), 1e-6 * JtJ.norm());
+	EXPECT_NEAR(rms, std::sqrt(residuals(m, T).squaredNorm() / static_cast<double>(m.size())), 1e-12);
+}
+
+TEST(Solver, StartsFromARotationOffSO3)
+{
+	// A pose composed over many frames drifts off SO(3); the solve must not carry a 1 % scale along.
+	const Eigen::Isometry3d truth = truePose();
+	const Matches m = syntheticMatches(truth, {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}, false, 0.0, 6);
+	SolverOptions o;
+	Eigen::Isometry3d T = truth * Eigen::Translation3d(0.05, 0.02, 0.0);
+	T.linear() *= 1.01;
+	solvePose(m, o, T);
+	EXPECT_LT((T.linear().transpose() * T.linear() - Eigen::Matrix3d::Identity()).norm(), 1e-9);
+	EXPECT_LT(translationError(T, truth), 0.001);
+	EXPECT_LT(rotationErrorDeg(T, truth), 0.005);
 }
 
 TEST(Solver, ARobustSolveTakesTheWholeStepFromFarOutsideTheLossScale)
 {
 	// Matches at the truth, a guess 10 cm and 1 deg off (up to 35 cm at 20 m), Cauchy bending at
-	// 5 cm: one solve (4 Ceres iterations) must land on the pose, batched as with one block per
-	// match. (Batches whose residuals were sqrt(rho(s)/s) r did not move at all: that residual is
-	// concave in the distance, Gauss-Newton over-steps and Levenberg-Marquardt refuses every step.)
+	// 5 cm: one solve (4 reweighted iterations) must land on the pose. (Residuals sqrt(rho(s)/s) r
+	// did not move at all: that residual is concave in the distance, Gauss-Newton over-steps and
+	// Levenberg-Marquardt refuses every step; reweighting takes the whole step.)
 	const Eigen::Isometry3d truth = truePose();
 	const Matches m = syntheticMatches(truth, {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}, true, 0.0, 5);
-	for (int block : {1, 64})
-	{
-		SolverOptions o;
-		o.loss = "cauchy";
-		o.matches_per_block = block;
-		Eigen::Isometry3d T = truth * Eigen::Translation3d(0.1, -0.05, 0.0) * Eigen::AngleAxisd(1.0 * M_PI / 180, Eigen::Vector3d::UnitZ());
-		solvePose(m, o, T);
-		EXPECT_LT(translationError(T, truth), 0.001) << block;
-		EXPECT_LT(rotationErrorDeg(T, truth), 0.005) << block;
-	}
+	SolverOptions o;
+	o.loss = "cauchy";
+	Eigen::Isometry3d T = truth * Eigen::Translation3d(0.1, -0.05, 0.0) * Eigen::AngleAxisd(1.0 * M_PI / 180, Eigen::Vector3d::UnitZ());
+	const SolveReport rep = solvePose(m, o, T);
+	EXPECT_LT(translationError(T, truth), 0.001);
+	EXPECT_LT(rotationErrorDeg(T, truth), 0.005);
+	EXPECT_LE(rep.iterations, o.max_solver_iterations);
 }
 
 TEST(Solver, RecoversThePoseDespiteOutliers)
 {
 	const Eigen::Isometry3d truth = truePose();
 	const Matches m = syntheticMatches(truth, {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, true, 0.2, 3);
-	for (int block : {1, 64})
-		for (const char* loss : {"huber", "cauchy"})
-		{
-			SolverOptions o;
-			o.loss = loss;
-			o.matches_per_block = block;
-			o.max_solver_iterations = 10;
-			Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-			T.translation() = Eigen::Vector3d(1.0, -0.3, 0.0);
-			T.linear() = Eigen::AngleAxisd(0.25, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-			for (int round = 0; round < 3; ++round) solvePose(m, o, T);
-			EXPECT_LT(translationError(T, truth), 0.01) << loss << " " << block;
-			EXPECT_LT(rotationErrorDeg(T, truth), 0.05) << loss << " " << block;
-		}
+	for (const char* loss : {"huber", "cauchy"})
+	{
+		SolverOptions o;
+		o.loss = loss;
+		o.max_solver_iterations = 10;
+		Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+		T.translation() = Eigen::Vector3d(1.0, -0.3, 0.0);
+		T.linear() = Eigen::AngleAxisd(0.25, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+		for (int round = 0; round < 3; ++round) solvePose(m, o, T);
+		EXPECT_LT(translationError(T, truth), 0.01) << loss;
+		EXPECT_LT(rotationErrorDeg(T, truth), 0.05) << loss;
+	}
 }
 
 TEST(Solver, DegeneracyFlagsAnUnconstrainedDirection)

@@ -32,7 +32,7 @@ class ScanToScanOdometry
 		bool ok = false;  ///< false: T_prev_curr is the initial guess
 		std::string reason;  ///< why not ok
 		int rounds = 0;  ///< correspondence + solve rounds run
-		int iterations = 0;  ///< Ceres iterations over all rounds
+		int iterations = 0;  ///< solver iterations over all rounds
 		int n_edges = 0, n_planes = 0;  ///< matches of the last round
 		double rms = 0;  ///< distance RMS at the solution [m]
 		Degeneracy degeneracy;  ///< of the last round's J^T J at the solution

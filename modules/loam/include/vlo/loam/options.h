@@ -67,10 +67,9 @@ struct FeatureOptions : public OptionSet
 struct SolverOptions
 {
 	int outer_iterations = 2;  ///< correspondence search + solve rounds
-	int max_solver_iterations = 4;  ///< Ceres iterations per round
+	int max_solver_iterations = 4;  ///< reweighted Levenberg-Marquardt iterations per round
 	std::string loss = "huber";  ///< huber | cauchy | none
 	double loss_scale = 0.05;  ///< residual scale where the robust loss bends [m]
-	int matches_per_block = 64;  ///< 1: one Ceres block per match (loss attached by Ceres)
 	double converged_translation = 0.005;  ///< a round moving less than this ends the rounds [m]
 	double converged_rotation_deg = 0.02;  ///< ... and turning less than this [deg]
 };

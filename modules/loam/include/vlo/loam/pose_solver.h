@@ -2,7 +2,7 @@
 // Robust least-squares pose from line and plane matches: iteratively reweighted Levenberg-Marquardt
 // on the 6-DoF pose (rotation perturbed on the left), J^T W J accumulated in one pass over the
 // matches. Ceres took three times as long on these 6 unknowns: its per-solve set-up and the
-// Jacobian written out densely (doc/SPEED.md "LOAM's pose solve").
+// Jacobian written out densely (doc/SPEED.md "LOAM's pose solve without Ceres").
 #include <vlo/loam/correspondences.h>
 #include <vlo/loam/options.h>
 

@@ -43,26 +43,20 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v)
 	return m;
 }
 
-/// The weight of each match at T; returns the sum of the squared distances.
-double weigh(const std::vector<EdgeMatch>& edges, const std::vector<PlaneMatch>& planes, const RobustWeight& weight,
-	const Eigen::Isometry3d& T, std::vector<double>& we, std::vector<double>& wp)
+/// The squared distance of every match at T, the edges' first.
+void squaredDistances(const std::vector<EdgeMatch>& edges, const std::vector<PlaneMatch>& planes, const Eigen::Isometry3d& T,
+	std::vector<double>& s)
 {
-	double sum2 = 0;
-	we.resize(edges.size());
-	wp.resize(planes.size());
-	for (std::size_t i = 0; i < edges.size(); ++i)
-	{
-		const double s = edgeResidual(edges[i], T).squaredNorm();
-		we[i] = weight(s);
-		sum2 += s;
-	}
-	for (std::size_t i = 0; i < planes.size(); ++i)
-	{
-		const double s = std::pow(planeResidual(planes[i], T), 2);
-		wp[i] = weight(s);
-		sum2 += s;
-	}
-	return sum2;
+	s.clear();
+	for (const EdgeMatch& e : edges) s.push_back(edgeResidual(e, T).squaredNorm());
+	for (const PlaneMatch& p : planes) s.push_back(std::pow(planeResidual(p, T), 2));
+}
+
+/// The robust weight rho'(s) of each squared distance.
+void weigh(const std::vector<double>& s, const RobustWeight& weight, std::vector<double>& w)
+{
+	w.resize(s.size());
+	for (std::size_t i = 0; i < s.size(); ++i) w[i] = weight(s[i]);
 }
 
 /// Weighted normal equations of the matches at T over the tangent [rotation (left), translation]:
@@ -74,8 +68,9 @@ struct NormalEquations
 	double cost = 0;
 };
 
+/// `w`: the weights of the edges, then of the planes.
 NormalEquations normalEquations(const std::vector<EdgeMatch>& edges, const std::vector<PlaneMatch>& planes,
-	const std::vector<double>& we, const std::vector<double>& wp, const Eigen::Isometry3d& T)
+	const std::vector<double>& w, const Eigen::Isometry3d& T)
 {
 	NormalEquations ne;
 	const Eigen::Matrix3d& R = T.linear();
@@ -88,11 +83,12 @@ NormalEquations normalEquations(const std::vector<EdgeMatch>& edges, const std::
 		const Eigen::Vector3d r = P * (Rp + T.translation() - e.a);
 		J.leftCols<3>() = -P * skew(Rp);
 		J.rightCols<3>() = P;
-		ne.H.noalias() += we[i] * J.transpose() * J;
-		ne.g.noalias() += we[i] * J.transpose() * r;
-		ne.cost += 0.5 * we[i] * r.squaredNorm();
+		ne.H.noalias() += w[i] * J.transpose() * J;
+		ne.g.noalias() += w[i] * J.transpose() * r;
+		ne.cost += 0.5 * w[i] * r.squaredNorm();
 	}
 	Eigen::Matrix<double, 6, 1> j;
+	const double* wp = w.data() + edges.size();
 	for (std::size_t i = 0; i < planes.size(); ++i)
 	{
 		const PlaneMatch& p = planes[i];
@@ -107,29 +103,22 @@ NormalEquations normalEquations(const std::vector<EdgeMatch>& edges, const std::
 	return ne;
 }
 
-double weightedCost(const Matches& m, const std::vector<double>& we, const std::vector<double>& wp, const Eigen::Isometry3d& T)
-{
-	double c = 0;
-	for (std::size_t i = 0; i < m.edges.size(); ++i) c += we[i] * edgeResidual(m.edges[i], T).squaredNorm();
-	for (std::size_t i = 0; i < m.planes.size(); ++i) c += wp[i] * std::pow(planeResidual(m.planes[i], T), 2);
-	return 0.5 * c;
-}
-
 /// Iteratively reweighted least squares: each iteration weighs the matches by rho'(s) at the current
 /// pose and takes one Levenberg-Marquardt step on the weighted squares (Marquardt's damping at 1e-4
 /// of the diagonal), kept only where the cost drops as the model predicts. Returns the iterations.
 int solveReweighted(const Matches& m, const SolverOptions& o, Eigen::Isometry3d& T)
 {
 	const RobustWeight weight(o);
-	std::vector<double> we, wp;
+	std::vector<double> s, s_next, w;  // squared distances at T and at the step's pose; weights at T
 	// Poses composed over many frames drift off SO(3), and a transposed inverse amplifies that.
 	T.linear() = Eigen::Quaterniond(T.linear()).normalized().toRotationMatrix();
+	squaredDistances(m.edges, m.planes, T, s);
 	int it = 0;
 	while (it < o.max_solver_iterations)
 	{
 		++it;
-		weigh(m.edges, m.planes, weight, T, we, wp);
-		const NormalEquations ne = normalEquations(m.edges, m.planes, we, wp, T);
+		weigh(s, weight, w);
+		const NormalEquations ne = normalEquations(m.edges, m.planes, w, T);
 		Eigen::Matrix<double, 6, 6> A = ne.H;
 		A.diagonal() += 1e-4 * ne.H.diagonal().cwiseMax(1e-6);
 		const Eigen::Matrix<double, 6, 1> d = -A.ldlt().solve(ne.g);
@@ -137,9 +126,14 @@ int solveReweighted(const Matches& m, const SolverOptions& o, Eigen::Isometry3d&
 		Eigen::Isometry3d next = T;
 		next.linear() = (Eigen::AngleAxisd(d.head<3>().norm(), d.head<3>().normalized()) * Eigen::Quaterniond(T.linear())).normalized().toRotationMatrix();
 		next.translation() += d.tail<3>();
-		const double predicted = -(ne.g.dot(d) + 0.5 * d.dot(ne.H * d)), cost = weightedCost(m, we, wp, next);
+		squaredDistances(m.edges, m.planes, next, s_next);
+		double cost = 0;
+		for (std::size_t i = 0; i < s_next.size(); ++i) cost += w[i] * s_next[i];
+		cost *= 0.5;
+		const double predicted = -(ne.g.dot(d) + 0.5 * d.dot(ne.H * d));
 		if (!(predicted > 0) || ne.cost - cost < 1e-3 * predicted) break;
 		T = next;
+		s.swap(s_next);  // the next iteration's weights come from these
 		if (ne.cost - cost <= 1e-6 * ne.cost) break;  // converged: the weights would not change either
 	}
 	return it;
@@ -157,9 +151,12 @@ void evaluateMatches(const std::vector<EdgeMatch>& edges, const std::vector<Plan
 	const Eigen::Isometry3d& T, Eigen::Matrix<double, 6, 6>& JtJ, double& rms)
 {
 	// Weighted as in the solve, so outliers count as little there as here.
-	std::vector<double> we, wp;
-	const double sum2 = weigh(edges, planes, RobustWeight(o), T, we, wp);
-	JtJ = normalEquations(edges, planes, we, wp, T).H;
+	std::vector<double> s, w;
+	squaredDistances(edges, planes, T, s);
+	weigh(s, RobustWeight(o), w);
+	JtJ = normalEquations(edges, planes, w, T).H;
+	double sum2 = 0;
+	for (double si : s) sum2 += si;
 	const std::size_t n = edges.size() + planes.size();
 	rms = n ? std::sqrt(sum2 / static_cast<double>(n)) : 0.0;
 }

@@ -82,7 +82,7 @@ void solvePass(BundleProblem& p, int its, bool robust, double chi2)
 	if (p.gauge != p.npos && (p.gauge_always || held == 0) && problem.HasParameterBlock(p.poses[p.gauge].data()))
 		problem.SetParameterBlockConstant(p.poses[p.gauge].data());
 	ceres::Solver::Summary summary;
-	ceres::Solve(detail::solverOptions(its, true), &problem, &summary);
+	ceres::Solve(detail::solverOptions(its), &problem, &summary);
 	if (robust) p.stats.initial_cost = summary.initial_cost;
 	p.stats.final_cost = summary.final_cost;
 }

@@ -57,7 +57,7 @@ void TrackingOptions::declare(OptionTable& t)
 	t.add("max_local_keyframes", max_local_keyframes, ">= 1", "keyframes of the local map");
 	t.add("min_local_inliers", min_local_inliers, ">= 4", "fewer after the local map: LOST");
 	t.add("pose_rounds", pose_rounds, ">= 1", "pose optimisation rounds (outliers re-marked)");
-	t.add("pose_iterations", pose_iterations, ">= 1", "Ceres iterations per round");
+	t.add("pose_iterations", pose_iterations, ">= 1", "solver iterations per round");
 	t.add("chi2", chi2, "> 0", "outlier threshold, squared error per sigma^2 (2 dof 95%)");
 	t.add("min_frames_between_keyframes", min_frames_between_keyframes, ">= 0", "no keyframe sooner than this");
 	t.add("keyframe_ref_ratio", keyframe_ref_ratio, "(0, 1]", "tracked < ratio * reference keyframe points: keyframe");

@@ -1,12 +1,62 @@
-// Pose-only optimisation of a tracked frame (ORB-SLAM's PoseOptimization with Ceres).
+// Pose-only optimisation of a tracked frame (ORB-SLAM's PoseOptimization) with core's reweighted
+// Levenberg-Marquardt: one pass over the observations per iteration, no per-solve set-up.
+#include <vlo/core/robust_pose_solver.h>
 #include <vlo/vo/optimizer.h>
-
-#include "reprojection_error.h"
-
-#include <deque>
 
 namespace vlo::vo
 {
+namespace
+{
+struct SeenPoint
+{
+	Vec3 X;  ///< the map point (world)
+	Vec2 px;  ///< its keypoint
+	double inv_sigma;  ///< 1 / the keypoint's pyramid scale
+};
+
+/// Fixed points' reprojection errors over their keypoints' sigma (the squared residual is the
+/// chi-square statistic with 2 dof), as solveRobustPose's problem.
+struct ReprojectionProblem
+{
+	const std::vector<SeenPoint>& obs;
+	const PinholeCamera& cam;
+
+	/// A point behind the camera (an outlier) still gets a finite residual.
+	static double safeDepth(double z) { return std::abs(z) < 1e-9 ? (z < 0 ? -1e-9 : 1e-9) : z; }
+	Vec2 residual(const SeenPoint& o, const Vec3& Xc) const
+	{
+		const double iz = 1.0 / safeDepth(Xc.z());
+		return Vec2(cam.fx * Xc.x() * iz + cam.cx - o.px.x(), cam.fy * Xc.y() * iz + cam.cy - o.px.y()) * o.inv_sigma;
+	}
+	void squaredResiduals(const SE3& T, std::vector<double>& s) const
+	{
+		s.clear();
+		for (const SeenPoint& o : obs) s.push_back(residual(o, T * o.X).squaredNorm());
+	}
+	PoseNormalEquations normalEquations(const std::vector<double>& w, const SE3& T) const
+	{
+		PoseNormalEquations ne;
+		Eigen::Matrix<double, 2, 6> J;
+		for (std::size_t i = 0; i < obs.size(); ++i)
+		{
+			const SeenPoint& o = obs[i];
+			const Vec3 RX = T.linear() * o.X, Xc = RX + T.translation();
+			const Vec2 r = residual(o, Xc);
+			const double iz = 1.0 / safeDepth(Xc.z());
+			Eigen::Matrix<double, 2, 3> Jp;
+			Jp << cam.fx * iz, 0, -cam.fx * Xc.x() * iz * iz, 0, cam.fy * iz, -cam.fy * Xc.y() * iz * iz;
+			Jp *= o.inv_sigma;
+			J.leftCols<3>() = -Jp * skew(RX);  // rotation perturbed on the left: d(exp(w) R X)/dw
+			J.rightCols<3>() = Jp;
+			ne.H.noalias() += w[i] * J.transpose() * J;
+			ne.g.noalias() += w[i] * J.transpose() * r;
+			ne.cost += 0.5 * w[i] * r.squaredNorm();
+		}
+		return ne;
+	}
+};
+}  // namespace
+
 int optimizePose(TrackedFrame& f, const PinholeCamera& cam, const ScalePyramid& pyr, int rounds, int iterations,
 	double chi2)
 {
@@ -17,30 +67,22 @@ int optimizePose(TrackedFrame& f, const PinholeCamera& cam, const ScalePyramid& 
 		if (f.points[i] && !f.points[i]->bad) idx.push_back(i);
 	}
 	if (idx.size() < 3) return 0;
-	double pose[6];
-	detail::toParams(f.Tcw, pose);
-	ceres::HuberLoss huber(std::sqrt(chi2));
-	const auto solver = detail::solverOptions(iterations, false);
+	SE3 T = f.Tcw;
 	int inliers = static_cast<int>(idx.size());
+	std::vector<SeenPoint> obs;
 	for (int round = 0; round < rounds; ++round)
 	{
-		std::deque<detail::PoseOnlyError> residuals;
-		ceres::Problem problem(detail::problemOptions());
-		int n = 0;
+		obs.clear();
 		for (std::size_t i : idx)
 		{
 			if (f.outlier[i]) continue;
 			const cv::KeyPoint& k = f.feat->keys[i];
-			// Robust only in the first rounds: once outliers are marked, plain least squares.
-			problem.AddResidualBlock(&residuals.emplace_back(f.points[i]->pos, Vec2(k.pt.x, k.pt.y),
-										 pyr.inv_scale[static_cast<std::size_t>(k.octave)], cam),
-				round < 2 ? &huber : nullptr, pose);
-			++n;
+			obs.push_back({f.points[i]->pos, Vec2(k.pt.x, k.pt.y), pyr.inv_scale[static_cast<std::size_t>(k.octave)]});
 		}
-		if (n < 3) break;
-		ceres::Solver::Summary summary;
-		ceres::Solve(solver, &problem, &summary);
-		const SE3 T = detail::fromParams(pose);
+		if (obs.size() < 3) break;
+		// Robust only in the first rounds: once outliers are marked, plain least squares.
+		const RobustWeight weight(round < 2 ? RobustWeight::Huber : RobustWeight::None, std::sqrt(chi2));
+		solveRobustPose(ReprojectionProblem{obs, cam}, weight, iterations, T);
 		inliers = 0;
 		for (std::size_t i : idx)
 		{
@@ -54,7 +96,7 @@ int optimizePose(TrackedFrame& f, const PinholeCamera& cam, const ScalePyramid& 
 		}
 		if (inliers < 10) break;
 	}
-	f.Tcw = detail::fromParams(pose);
+	f.Tcw = T;
 	return inliers;
 }
 }  // namespace vlo::vo

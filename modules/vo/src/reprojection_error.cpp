@@ -72,13 +72,6 @@ bool ReprojectionError::Evaluate(double const* const* p, double* r, double** J) 
 	return true;
 }
 
-bool PoseOnlyError::Evaluate(double const* const* p, double* r, double** J) const
-{
-	const double* params[2] = {p[0], X_.data()};
-	double* jac[2] = {J ? J[0] : nullptr, nullptr};
-	return e_.Evaluate(params, r, J ? jac : nullptr);
-}
-
 void toParams(const SE3& T, double* p)
 {
 	const Eigen::AngleAxisd aa(T.linear());
@@ -89,11 +82,11 @@ void toParams(const SE3& T, double* p)
 
 SE3 fromParams(const double* p) { return makeSE3(rotationFromParams(p), Vec3(p[3], p[4], p[5])); }
 
-ceres::Solver::Options solverOptions(int iterations, bool schur)
+ceres::Solver::Options solverOptions(int iterations)
 {
 	ceres::Solver::Options o;
 	o.max_num_iterations = iterations;
-	o.linear_solver_type = schur ? ceres::DENSE_SCHUR : ceres::DENSE_QR;
+	o.linear_solver_type = ceres::DENSE_SCHUR;
 	o.num_threads = 1;  // deterministic runs
 	o.logging_type = ceres::SILENT;
 	o.minimizer_progress_to_stdout = false;

@@ -59,21 +59,9 @@ class ReprojectionError : public ceres::SizedCostFunction<2, 6, 3>
 	std::size_t pose_;
 };
 
-/// The same with the point held fixed (pose-only optimisation).
-class PoseOnlyError : public ceres::SizedCostFunction<2, 6>
-{
-   public:
-	PoseOnlyError(const Vec3& X, const Vec2& obs, double inv_sigma, const PinholeCamera& c) : X_(X), e_(obs, inv_sigma, c) {}
-	bool Evaluate(double const* const* p, double* r, double** J) const override;
-
-   private:
-	Vec3 X_;
-	ReprojectionError e_;
-};
-
 void toParams(const SE3& T, double* p);
 SE3 fromParams(const double* p);
-ceres::Solver::Options solverOptions(int iterations, bool schur);
+ceres::Solver::Options solverOptions(int iterations);
 /// For problems whose residuals and loss the caller owns (and keeps until the solve is done).
 ceres::Problem::Options problemOptions();
 }  // namespace vlo::vo::detail

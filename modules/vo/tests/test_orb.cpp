@@ -77,3 +77,26 @@ TEST(Orb, BlankImageGivesNoFeatures)
 		EXPECT_TRUE(f.grid.inArea(100, 100, 50).empty());
 	}
 }
+
+// The word-parallel bit count against counting bit by bit, up to descriptors that differ everywhere.
+TEST(Orb, HammingCountsEveryDifferingBit)
+{
+	cv::RNG rng(7);
+	uint8_t a[32], b[32];
+	for (int trial = 0; trial < 200; ++trial)
+	{
+		for (int i = 0; i < 32; ++i)
+		{
+			a[i] = static_cast<uint8_t>(rng.uniform(0, 256));
+			// The last trials: complements (256 bits), then copies (0 bits).
+			b[i] = trial == 198 ? static_cast<uint8_t>(~a[i]) : trial == 199 ? a[i] : static_cast<uint8_t>(rng.uniform(0, 256));
+		}
+		int bits = 0;
+		for (int i = 0; i < 32; ++i)
+			for (int k = 0; k < 8; ++k) bits += ((a[i] ^ b[i]) >> k) & 1;
+		ASSERT_EQ(bits, hamming(a, b)) << "trial " << trial;
+	}
+	a[0] = 0, b[0] = 0xff;  // no other way to reach 256 than the complement
+	for (int i = 1; i < 32; ++i) b[i] = static_cast<uint8_t>(~a[i]);
+	EXPECT_EQ(256, hamming(a, b));
+}

@@ -51,18 +51,6 @@ TEST(Reprojection, AnalyticJacobiansMatchAutodiff)
 		for (int i = 0; i < 12; ++i) EXPECT_NEAR(ja0[i], jb0[i], 1e-6 * (1 + std::abs(jb0[i]))) << "angle " << angle << " d/dpose " << i;
 		for (int i = 0; i < 6; ++i) EXPECT_NEAR(ja1[i], jb1[i], 1e-6 * (1 + std::abs(jb1[i]))) << "d/dX " << i;
 	}
-	// Pose-only: the same numbers for the pose block.
-	const Vec3 X(1, 2, 10);
-	detail::PoseOnlyError pose_only(X, obs, w, cam);
-	double pose[6] = {0.1, 0.2, -0.1, 0, 0, 1};
-	const double* p1[1] = {pose};
-	const double* p2[2] = {pose, X.data()};
-	double r1[2], r2[2], j1[12], j2a[12], j2b[6];
-	double* J1[1] = {j1};
-	double* J2[2] = {j2a, j2b};
-	ASSERT_TRUE(pose_only.Evaluate(p1, r1, J1));
-	ASSERT_TRUE(analytic.Evaluate(p2, r2, J2));
-	for (int i = 0; i < 12; ++i) EXPECT_DOUBLE_EQ(j1[i], j2a[i]);
 }
 
 // The rotations shared between the observations of a pose give the very same numbers as computing

@@ -1,8 +1,6 @@
 #pragma once
-// Robust least-squares pose from line and plane matches: iteratively reweighted Levenberg-Marquardt
-// on the 6-DoF pose (rotation perturbed on the left), J^T W J accumulated in one pass over the
-// matches. Ceres took three times as long on these 6 unknowns: its per-solve set-up and the
-// Jacobian written out densely (doc/SPEED.md "LOAM's pose solve without Ceres").
+// Robust least-squares pose from line and plane matches: core's reweighted Levenberg-Marquardt
+// (vlo/core/robust_pose_solver.h) with J^T W J accumulated in one pass over the matches.
 #include <vlo/loam/correspondences.h>
 #include <vlo/loam/options.h>
 

@@ -47,17 +47,22 @@ struct Features
 	const uint8_t* descriptor(std::size_t i) const { return descriptors.ptr<uint8_t>(static_cast<int>(i)); }
 };
 
-/// Hamming distance of two 256-bit descriptors.
+/// Hamming distance of two 256-bit descriptors. The bits are counted in parallel within each word
+/// (without -mpopcnt, __builtin_popcountll is a call into libgcc's table lookup).
 inline int hamming(const uint8_t* a, const uint8_t* b)
 {
-	int d = 0;
+	uint64_t bytes = 0;  // per byte: the set bits of that byte in the four words (<= 32)
 	for (int i = 0; i < 32; i += 8)
 	{
 		uint64_t x, y;
 		std::memcpy(&x, a + i, 8);
 		std::memcpy(&y, b + i, 8);
-		d += __builtin_popcountll(x ^ y);
+		x ^= y;
+		x -= (x >> 1) & 0x5555555555555555ULL;
+		x = (x & 0x3333333333333333ULL) + ((x >> 2) & 0x3333333333333333ULL);
+		bytes += (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fULL;
 	}
-	return d;
+	const uint64_t pairs = (bytes & 0x00ff00ff00ff00ffULL) + ((bytes >> 8) & 0x00ff00ff00ff00ffULL);  // <= 64 each
+	return static_cast<int>((pairs * 0x0001000100010001ULL) >> 48);  // <= 256: fits the top 16 bits
 }
 }  // namespace vlo::vo

@@ -77,7 +77,7 @@ struct TrackingOptions : public OptionSet
 	int max_local_keyframes = 80;
 	int min_local_inliers = 30;  ///< fewer after tracking the local map: LOST
 	int pose_rounds = 4;  ///< pose-only optimisation: rounds of outlier marking ...
-	int pose_iterations = 10;  ///< ... of this many Ceres iterations each
+	int pose_iterations = 10;  ///< ... of at most this many solver iterations each
 	double chi2 = 5.991;  ///< outlier threshold on the squared, sigma-normalised reprojection error
 	int min_frames_between_keyframes = 0;
 	double keyframe_ref_ratio = 0.9;  ///< tracked < ratio * reference keyframe's points: new keyframe

@@ -2,6 +2,7 @@
 #include <vlo/vo/bundle_problem.h>
 
 #include <deque>
+#include <memory>
 #include <unordered_map>
 
 #include "reprojection_error.h"
@@ -81,8 +82,16 @@ void solvePass(BundleProblem& p, int its, bool robust, double chi2)
 	// Monocular gauge: without fixed keyframes, hold one (7th dof, scale, is left to damping).
 	if (p.gauge != p.npos && (p.gauge_always || held == 0) && problem.HasParameterBlock(p.poses[p.gauge].data()))
 		problem.SetParameterBlockConstant(p.poses[p.gauge].data());
+	// The Schur complement eliminates the points: said here, Ceres need not search the problem's
+	// graph for an independent set each solve.
+	ceres::Solver::Options options = detail::solverOptions(its);
+	options.linear_solver_ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+	for (auto& X : p.points)
+		if (problem.HasParameterBlock(X.data())) options.linear_solver_ordering->AddElementToGroup(X.data(), 0);
+	for (auto& pose : p.poses)
+		if (problem.HasParameterBlock(pose.data())) options.linear_solver_ordering->AddElementToGroup(pose.data(), 1);
 	ceres::Solver::Summary summary;
-	ceres::Solve(detail::solverOptions(its), &problem, &summary);
+	ceres::Solve(options, &problem, &summary);
 	if (robust) p.stats.initial_cost = summary.initial_cost;
 	p.stats.final_cost = summary.final_cost;
 }

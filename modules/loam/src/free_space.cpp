@@ -20,17 +20,21 @@ FreeSpace::FreeSpace(const ScanPoints& a, const ScanPoints& b, int n_azimuth_bin
 
 void FreeSpace::add(const ScanPoints& points)
 {
+	// Sized once: grown ring by ring, the bins (a megabyte for 64 rings) would be copied each time.
+	int top = -1;
+	for (const ScanPoint& sp : points) top = std::max(top, sp.ring);
+	const auto rings = static_cast<std::size_t>(top + 1);
+	if (rings > ring_count_.size())
+	{
+		ring_count_.resize(rings, 0);
+		ring_elevation_.resize(rings, 0.0f);
+		bins_.resize(rings * static_cast<std::size_t>(n_cols_), Eigen::Vector4f::Zero());
+	}
 	for (const ScanPoint& sp : points)
 	{
 		const float r = sp.p.norm();
 		if (sp.ring < 0 || r <= 0) continue;
 		const std::size_t ring = static_cast<std::size_t>(sp.ring);
-		if (ring >= ring_count_.size())
-		{
-			ring_count_.resize(ring + 1, 0);
-			ring_elevation_.resize(ring + 1, 0.0f);
-			bins_.resize((ring + 1) * static_cast<std::size_t>(n_cols_), Eigen::Vector4f::Zero());
-		}
 		ring_elevation_[ring] += elevationOf(sp.p);
 		++ring_count_[ring];
 		Eigen::Vector4f& b = bins_[ring * static_cast<std::size_t>(n_cols_) + static_cast<std::size_t>(column(sp.p))];

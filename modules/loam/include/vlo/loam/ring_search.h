@@ -3,7 +3,8 @@
 // matching needs (the first neighbour, then a second point on the same and on nearby rings).
 // Each ring is kept sorted by azimuth with a table of 1-degree bins for an O(1) start; the search
 // walks outwards both ways from the query's azimuth and stops once the angular offset alone puts
-// every further point beyond the best distance found.
+// every further point beyond the best distance found. A ring whose elevations lie too far from the
+// query's for any of its points to be closer is not searched at all.
 #include <vlo/loam/types.h>
 
 #include <vector>
@@ -18,7 +19,7 @@ class RingSearch
 	{
 		explicit Query(const Eigen::Vector3f& q);
 		Eigen::Vector3f p;
-		float az;
+		float az, elevation, range;
 	};
 
 	/// Indexes `points` (which must outlive the searches) by ring.
@@ -46,5 +47,6 @@ class RingSearch
 	std::vector<Entry> entries_;  ///< ring by ring, each sorted by azimuth
 	std::vector<std::size_t> begin_;  ///< n_rings + 1 offsets
 	std::vector<int> bin_start_;  ///< per ring and bin: first entry (ring-relative) with az >= bin start
+	std::vector<float> elevation_lo_, elevation_hi_;  ///< per ring: the span of its points' elevations [rad]
 };
 }  // namespace vlo::loam

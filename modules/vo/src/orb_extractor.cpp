@@ -55,35 +55,29 @@ OrbExtractor::OrbExtractor(const OrbOptions& opt) : opt_(opt), pyramid_(opt.n_le
 
 	orb_ = cv::ORB::create(opt.n_features, static_cast<float>(opt.scale_factor), opt.n_levels, opt.edge_threshold,
 		0, 2, cv::ORB::FAST_SCORE, 31, opt.fast_threshold);
+	orb_level_ = cv::ORB::create(opt.n_features, static_cast<float>(opt.scale_factor), 1, opt.edge_threshold, 0, 2,
+		cv::ORB::FAST_SCORE, 31, opt.fast_threshold);
 }
 
-std::vector<cv::KeyPoint> OrbExtractor::detectSpread(const std::vector<cv::Mat>& levels) const
+std::vector<cv::KeyPoint> OrbExtractor::detectSpread(const cv::Mat& im, int level) const
 {
-	std::vector<cv::KeyPoint> all;
 	const int border = opt_.edge_threshold - 3;  // FAST itself keeps 3 px off the ROI border
-	for (int l = 0; l < pyramid_.levels; ++l)
+	const int w = im.cols - 2 * border, h = im.rows - 2 * border;
+	const int want = per_level_[level];
+	if (w < 16 || h < 16 || want <= 0) return {};
+	// Weak corners only in cells without a strong one, then an even spread.
+	const std::vector<cv::KeyPoint> kps = detail::detectFast(im(cv::Rect(border, border, w, h)), opt_.fallback_cell,
+		opt_.fast_threshold, opt_.fast_min_threshold);
+	std::vector<cv::KeyPoint> chosen = opt_.detector == "quadtree" ? detail::distributeQuadtree(kps, w, h, want)
+																	: detail::distributeAnms(kps, w, h, want, opt_.anms_pool);
+	for (auto& k : chosen)
 	{
-		const cv::Mat& im = levels[l];
-		const int w = im.cols - 2 * border, h = im.rows - 2 * border;
-		const int want = per_level_[l];
-		if (w < 16 || h < 16 || want <= 0) continue;
-		// Weak corners only in cells without a strong one, then an even spread.
-		const std::vector<cv::KeyPoint> kps = detail::detectFast(im(cv::Rect(border, border, w, h)), opt_.fallback_cell,
-			opt_.fast_threshold, opt_.fast_min_threshold);
-		std::vector<cv::KeyPoint> chosen = opt_.detector == "quadtree" ? detail::distributeQuadtree(kps, w, h, want)
-																		: detail::distributeAnms(kps, w, h, want, opt_.anms_pool);
-		const float s = static_cast<float>(pyramid_.scale[l]);
-		for (auto& k : chosen)
-		{
-			k.pt += cv::Point2f(float(border), float(border));
-			k.angle = centroidAngle(im, k.pt, umax_);
-			k.pt *= s;
-			k.octave = l;
-			k.size = 31.f * s;
-			all.push_back(k);
-		}
+		k.pt += cv::Point2f(float(border), float(border));
+		k.angle = centroidAngle(im, k.pt, umax_);
+		k.octave = 0;  // the level's own image: what OpenCV's one-level ORB describes
+		k.size = 31.f;
 	}
-	return all;
+	return chosen;
 }
 
 Features OrbExtractor::extract(const cv::Mat& gray) const
@@ -104,9 +98,26 @@ Features OrbExtractor::extract(const cv::Mat& gray) const
 				static_cast<int>(std::lround(gray.rows * pyramid_.inv_scale[l])));
 			cv::resize(levels[l - 1], levels[l], sz, 0, 0, cv::INTER_LINEAR);
 		}
-		f.keys = detectSpread(levels);
-		// OpenCV's rBRIEF at the keypoints' own octave and angle (it may reorder them).
-		if (!f.keys.empty()) orb_->compute(gray, f.keys, f.descriptors);
+		// Per level: corners, then OpenCV's rBRIEF on that level's image (a one-level ORB; the
+		// pyramid's own ORB would build a second pyramid), then level-0 coordinates.
+		std::vector<cv::Mat> descriptors;
+		for (int l = 0; l < pyramid_.levels; ++l)
+		{
+			std::vector<cv::KeyPoint> keys = detectSpread(levels[l], l);
+			if (keys.empty()) continue;
+			cv::Mat d;
+			orb_level_->compute(levels[l], keys, d);  // keeps those edge_threshold off the border: all here
+			const float s = static_cast<float>(pyramid_.scale[l]);
+			for (auto& k : keys)
+			{
+				k.pt *= s;
+				k.octave = l;
+				k.size = 31.f * s;
+				f.keys.push_back(k);
+			}
+			descriptors.push_back(d);
+		}
+		if (!descriptors.empty()) cv::vconcat(descriptors, f.descriptors);
 	}
 	if (f.descriptors.empty()) f.keys.clear();
 	f.grid.build(f.keys, f.width, f.height);

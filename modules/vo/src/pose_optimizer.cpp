@@ -3,6 +3,8 @@
 #include <vlo/core/robust_pose_solver.h>
 #include <vlo/vo/optimizer.h>
 
+#include "reprojection_error.h"
+
 namespace vlo::vo
 {
 namespace
@@ -21,12 +23,9 @@ struct ReprojectionProblem
 	const std::vector<SeenPoint>& obs;
 	const PinholeCamera& cam;
 
-	/// A point behind the camera (an outlier) still gets a finite residual.
-	static double safeDepth(double z) { return std::abs(z) < 1e-9 ? (z < 0 ? -1e-9 : 1e-9) : z; }
 	Vec2 residual(const SeenPoint& o, const Vec3& Xc) const
 	{
-		const double iz = 1.0 / safeDepth(Xc.z());
-		return Vec2(cam.fx * Xc.x() * iz + cam.cx - o.px.x(), cam.fy * Xc.y() * iz + cam.cy - o.px.y()) * o.inv_sigma;
+		return (project(cam, Vec3(Xc.x(), Xc.y(), detail::safeDepth(Xc.z()))) - o.px) * o.inv_sigma;
 	}
 	void squaredResiduals(const SE3& T, std::vector<double>& s) const
 	{
@@ -42,7 +41,7 @@ struct ReprojectionProblem
 			const SeenPoint& o = obs[i];
 			const Vec3 RX = T.linear() * o.X, Xc = RX + T.translation();
 			const Vec2 r = residual(o, Xc);
-			const double iz = 1.0 / safeDepth(Xc.z());
+			const double iz = 1.0 / detail::safeDepth(Xc.z());
 			Eigen::Matrix<double, 2, 3> Jp;
 			Jp << cam.fx * iz, 0, -cam.fx * Xc.x() * iz * iz, 0, cam.fy * iz, -cam.fy * Xc.y() * iz * iz;
 			Jp *= o.inv_sigma;

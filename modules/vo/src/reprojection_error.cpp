@@ -47,9 +47,7 @@ bool ReprojectionError::Evaluate(double const* const* p, double* r, double** J) 
 	const PoseRotations::Rotation* shared = rotations_ ? &rotations_->at(pose_, pose) : nullptr;
 	const Mat3 R = shared ? shared->R : rotationFromParams(pose);
 	const Vec3 Xc = R * X + Vec3(pose[3], pose[4], pose[5]);
-	// A point behind the camera (an outlier) still gets a finite residual, as with autodiff: failing
-	// the evaluation would stop the whole solve at its first iteration.
-	const double z = std::abs(Xc.z()) < 1e-9 ? (Xc.z() < 0 ? -1e-9 : 1e-9) : Xc.z();
+	const double z = safeDepth(Xc.z());
 	const double iz = 1.0 / z;
 	r[0] = (c_.fx * Xc.x() * iz + c_.cx - obs_.x()) * w_;
 	r[1] = (c_.fy * Xc.y() * iz + c_.cy - obs_.y()) * w_;

@@ -6,10 +6,15 @@
 #include <ceres/ceres.h>
 #include <vlo/vo/geometry.h>
 
+#include <cmath>
 #include <vector>
 
 namespace vlo::vo::detail
 {
+/// A depth kept 1e-9 away from zero, its sign kept: a point behind the camera (an outlier) still gets
+/// a finite residual, as with autodiff (failing the evaluation would stop a whole solve).
+inline double safeDepth(double z) { return std::abs(z) < 1e-9 ? (z < 0 ? -1e-9 : 1e-9) : z; }
+
 /// Jr(w), the right Jacobian of SO(3).
 Mat3 rightJacobian(const Vec3& w);
 /// d(R(w) X)/dw = -R [X]x Jr(w).

@@ -139,13 +139,20 @@ void FeatureExtractor::extractRing(const ScanPoint* p, int n, FeatureSet& out)
 	if (n < 2 * W + 2 * opt_.n_sectors) return;
 	picked_.assign(n, 0);
 	label_.assign(n, 0);
+	for (int a = 0; a < 3; ++a) coord_[a].resize(n), diff_[a].resize(n);
 
-	for (int i = W; i < n - W; ++i)
+	// Per coordinate and one offset at a time, so that the loops over the points vectorise: the
+	// sums are those of sum_j (p[i-j] + p[i+j]) - 2W p[i], added in the same order per point.
+	for (int a = 0; a < 3; ++a)
 	{
-		Eigen::Vector3f d = static_cast<float>(-2 * W) * p[i].p;
-		for (int j = 1; j <= W; ++j) d += p[i - j].p + p[i + j].p;
-		curv_[i] = d.squaredNorm();
+		float* x = coord_[a].data();
+		float* d = diff_[a].data();
+		for (int i = 0; i < n; ++i) x[i] = p[i].p[a];
+		for (int i = W; i < n - W; ++i) d[i] = static_cast<float>(-2 * W) * x[i];
+		for (int j = 1; j <= W; ++j)
+			for (int i = W; i < n - W; ++i) d[i] += x[i - j] + x[i + j];
 	}
+	for (int i = W; i < n - W; ++i) curv_[i] = diff_[0][i] * diff_[0][i] + diff_[1][i] * diff_[1][i] + diff_[2][i] * diff_[2][i];
 	markUnreliable(p, n);
 	if (opt_.max_azimuth_gap > 0) markAzimuthGaps(p, n);
 

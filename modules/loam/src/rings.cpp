@@ -83,18 +83,18 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 	out.n_input = scan.size();
 	out.ring_begin.assign(n_rings + 1, 0);
 	count_.assign(n_rings, 0);
-	buf_.clear();
-	buf_.reserve(scan.size());
+	ring_of_.resize(scan.size());
 
 	const float min2 = static_cast<float>(opt_.min_range * opt_.min_range);
 	const float max2 = static_cast<float>(opt_.max_range * opt_.max_range);
-	const float dir = opt_.clockwise ? -1.0f : 1.0f;  // clockwise: azimuth decreases with time
-	const float ref = static_cast<float>(opt_.deskew_reference), per_period = static_cast<float>(1.0 / opt_.scan_period);
-	float az0 = static_cast<float>(opt_.sweep_start_azimuth_deg * kDeg);
-	bool have_start = !opt_.time_from_first_point;
-
-	for (const LidarPoint& lp : scan)
+	const float per_period = static_cast<float>(1.0 / opt_.scan_period);
+	// Two passes, no intermediate copy: the first keeps the ring of each usable point (-1: dropped)
+	// and counts the rings, the second writes each point straight to its place (a stable counting
+	// sort by ring, which keeps the sensor's order within a ring).
+	for (std::size_t i = 0; i < scan.size(); ++i)
 	{
+		const LidarPoint& lp = scan[i];
+		ring_of_[i] = -1;
 		if (!std::isfinite(lp.x) || !std::isfinite(lp.y) || !std::isfinite(lp.z))
 		{
 			++out.n_invalid;
@@ -112,19 +112,32 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 			++out.n_out_of_fov;
 			continue;
 		}
-		ScanPoint p;
+		if (out.times_from_data && !(std::fabs(lp.time * per_period) <= kMaxSweepsAway))  // NaN too: not a time of this sweep
+		{
+			++out.n_invalid;
+			continue;
+		}
+		ring_of_[i] = static_cast<std::int16_t>(ring);
+		++count_[ring];
+	}
+	for (int r = 0; r < n_rings; ++r) out.ring_begin[r + 1] = out.ring_begin[r] + count_[r];
+	out.points.resize(out.ring_begin.back());
+	std::vector<std::size_t> next(out.ring_begin.begin(), out.ring_begin.end() - 1);
+
+	const float dir = opt_.clockwise ? -1.0f : 1.0f;  // clockwise: azimuth decreases with time
+	const float ref = static_cast<float>(opt_.deskew_reference);
+	float az0 = static_cast<float>(opt_.sweep_start_azimuth_deg * kDeg);
+	bool have_start = !opt_.time_from_first_point;
+	for (std::size_t i = 0; i < scan.size(); ++i)
+	{
+		const int ring = ring_of_[i];
+		if (ring < 0) continue;
+		const LidarPoint& lp = scan[i];
+		ScanPoint& p = out.points[next[ring]++];
 		p.p = Eigen::Vector3f(lp.x, lp.y, lp.z);
 		p.ring = ring;
 		if (out.times_from_data)
-		{
-			const float sweeps = lp.time * per_period;
-			if (!(std::fabs(sweeps) <= kMaxSweepsAway))  // NaN too: not a time of this sweep
-			{
-				++out.n_invalid;
-				continue;
-			}
-			p.time = ref + sweeps;  // the frame's time (0) is the pose's: deskew_reference
-		}
+			p.time = ref + lp.time * per_period;  // the frame's time (0) is the pose's: deskew_reference
 		else
 		{
 			const float az = fastAtan2(lp.y, lp.x);
@@ -138,15 +151,7 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 			if (s >= 1.0f) s = 0.0f;  // rounding of tiny negative values
 			p.time = s;
 		}
-		buf_.push_back(p);
-		++count_[ring];
 	}
-
-	// Stable counting sort by ring keeps the sensor's order within a ring.
-	for (int r = 0; r < n_rings; ++r) out.ring_begin[r + 1] = out.ring_begin[r] + count_[r];
-	out.points.resize(buf_.size());
-	std::vector<std::size_t> next(out.ring_begin.begin(), out.ring_begin.end() - 1);
-	for (const ScanPoint& p : buf_) out.points[next[p.ring]++] = p;
 
 	// Most sensors deliver rings in time order, or rotated by the ring's start offset when the
 	// order is ring by ring (KITTI): rotate in that case and sort only otherwise.

@@ -30,6 +30,7 @@ class FeatureExtractor
 
 	FeatureOptions opt_;
 	std::vector<float> curv_;  ///< per point of the current ring
+	std::vector<float> coord_[3], diff_[3];  ///< the ring's x, y, z; the curvature's difference vector
 	static constexpr std::uint8_t kSuppressed = 1, kUnreliable = 2;
 	std::vector<std::uint8_t> picked_;  ///< excluded from further selection (and why)
 	std::vector<std::int8_t> label_;  ///< 2 sharp, 1 less sharp, -1 flat, 0 none

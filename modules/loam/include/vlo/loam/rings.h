@@ -9,6 +9,7 @@
 #include <vlo/loam/types.h>
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace vlo::loam
@@ -73,7 +74,7 @@ class ScanPreprocessor
    private:
 	ScanOptions opt_;
 	RingModel model_;
-	ScanPoints buf_;  ///< reused between scans
+	std::vector<std::int16_t> ring_of_;  ///< per input point: its ring, -1 if dropped (reused between scans)
 	std::vector<std::size_t> count_;
 };
 }  // namespace vlo::loam

@@ -65,10 +65,15 @@ std::size_t VoxelMap::removeIf(const Eigen::Vector3f& c, float radius, Gone&& go
 	const float r2 = radius * radius;
 	const float reach = radius + static_cast<float>(size_) * 0.87f;  // + half a voxel's diagonal
 	const float half = static_cast<float>(0.5 * size_);
-	index_.forEach([&](std::uint64_t, std::uint32_t id) {
+	// Slot by slot, not through the hash: the voxels are read in memory order and the next one's
+	// points are fetched ahead (this runs over every voxel each frame, and waited on memory). Recycled
+	// slots hold no points.
+	for (std::size_t id = 0; id < voxels_.size(); ++id)
+	{
+		if (id + 1 < voxels_.size()) __builtin_prefetch(voxels_[id + 1].points.data());
 		Voxel& v = voxels_[id];
 		const Eigen::Vector3f centre = v.key.cast<float>() * static_cast<float>(size_) + Eigen::Vector3f::Constant(half);
-		if ((centre - c).squaredNorm() > reach * reach) return;
+		if (v.points.empty() || (centre - c).squaredNorm() > reach * reach) continue;
 		for (std::size_t i = 0; i < v.points.size();)
 		{
 			if ((v.points[i] - c).squaredNorm() > r2 || !gone(v.points[i]))
@@ -82,7 +87,7 @@ std::size_t VoxelMap::removeIf(const Eigen::Vector3f& c, float radius, Gone&& go
 			v.tags[i] = v.tags.back(), v.tags.pop_back();
 			++removed;
 		}
-	});
+	}
 	n_points_ -= removed;
 	return removed;
 }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <queue>
@@ -14,6 +16,36 @@ bool stronger(const cv::KeyPoint& a, const cv::KeyPoint& b)
 {
 	if (a.response != b.response) return a.response > b.response;
 	return a.pt.y != b.pt.y ? a.pt.y < b.pt.y : a.pt.x < b.pt.x;
+}
+
+namespace
+{
+/// A float's bits as an unsigned integer in the same order (negatives flipped below the positives).
+std::uint32_t orderedBits(float f)
+{
+	std::uint32_t u;
+	std::memcpy(&u, &f, sizeof u);
+	return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+}
+}  // namespace
+
+void sortStrongestFirst(std::vector<cv::KeyPoint>& kps)
+{
+	// The order of `stronger` as two integer words per corner, with its index: a sort of these small
+	// keys is twice as fast as one of the keypoints under the comparator (thousands per level).
+	struct Key
+	{
+		std::uint64_t hi, lo;  ///< (weaker response, y), (x, index)
+		bool operator<(const Key& o) const { return hi != o.hi ? hi < o.hi : lo < o.lo; }
+	};
+	std::vector<Key> keys(kps.size());
+	for (std::size_t i = 0; i < kps.size(); ++i)
+		keys[i] = {(std::uint64_t{~orderedBits(kps[i].response)} << 32) | orderedBits(kps[i].pt.y),
+			(std::uint64_t{orderedBits(kps[i].pt.x)} << 32) | i};
+	std::sort(keys.begin(), keys.end());
+	std::vector<cv::KeyPoint> sorted(kps.size());
+	for (std::size_t i = 0; i < keys.size(); ++i) sorted[i] = kps[keys[i].lo & 0xFFFFFFFFu];
+	kps.swap(sorted);
 }
 
 std::vector<cv::KeyPoint> detectFast(const cv::Mat& roi, int cell, int strong, int weak)
@@ -86,7 +118,7 @@ std::vector<int> suppress(const std::vector<cv::KeyPoint>& kps, int w, int h, do
 std::vector<cv::KeyPoint> distributeAnms(std::vector<cv::KeyPoint> kps, int w, int h, int want, double pool)
 {
 	if (kps.empty() || want <= 0) return {};
-	std::sort(kps.begin(), kps.end(), stronger);
+	sortStrongestFirst(kps);
 	// Only the strongest few times `want` compete: weaker ones would never win a radius anyway.
 	kps.resize(std::min(kps.size(), static_cast<std::size_t>(pool * want)));
 	const auto n = static_cast<std::size_t>(want);

@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 #include <vlo/vo/orb_extractor.h>
 
+#include "../src/feature_distribution.h"
 #include "synthetic_scene.h"
+
+#include <random>
 
 using namespace vlo;
 using namespace vlo::vo;
@@ -99,4 +102,25 @@ TEST(Orb, HammingCountsEveryDifferingBit)
 	a[0] = 0, b[0] = 0xff;  // no other way to reach 256 than the complement
 	for (int i = 1; i < 32; ++i) b[i] = static_cast<uint8_t>(~a[i]);
 	EXPECT_EQ(256, hamming(a, b));
+}
+
+TEST(Orb, CornersSortStrongestFirstAsTheComparatorDoes)
+{
+	// Ties of response broken by position, as FAST's integer scores on a pixel grid give by the
+	// thousand; and a few negative and fractional values the comparator orders as well.
+	std::mt19937 rng(3);
+	std::vector<cv::KeyPoint> kps;
+	for (int i = 0; i < 5000; ++i)
+		kps.emplace_back(cv::Point2f(float(rng() % 200), float(rng() % 100)), 7.f, -1.f, float(rng() % 30));
+	kps.emplace_back(cv::Point2f(-1.5f, 2.25f), 7.f, -1.f, -3.f);
+	kps.emplace_back(cv::Point2f(0.f, -0.5f), 7.f, -1.f, 12.5f);
+	auto expected = kps;
+	std::stable_sort(expected.begin(), expected.end(), detail::stronger);
+	detail::sortStrongestFirst(kps);
+	ASSERT_EQ(kps.size(), expected.size());
+	for (std::size_t i = 0; i < kps.size(); ++i)
+	{
+		EXPECT_EQ(kps[i].pt, expected[i].pt) << i;
+		EXPECT_EQ(kps[i].response, expected[i].response) << i;
+	}
 }

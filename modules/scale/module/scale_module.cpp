@@ -51,7 +51,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 			return applied;
 		}
 		// The estimator wants T_{C(i-1)}^{C(i)}; the VO gives the current camera in the previous one.
-		const scale::ScaleEstimate e = corrector_->estimate(*prev, cur, vo.camera_motion->inverse());
+		const scale::ScaleEstimate e = corrector_->estimate(*prev, cur, vo.camera_motion->inverse(), &pyramid_);
 		++estimates_;
 		valid_ += e.valid ? 1 : 0;
 		const scale::ScaleDecision d = policy_->decide(e);
@@ -136,6 +136,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 
 	scale::ScaleOptions opt_;
 	std::unique_ptr<scale::ScaleCorrector> corrector_;
+	scale::PyramidReuse pyramid_;  ///< C(i)'s LK pyramid, C(i-1)'s at the next frame
 	std::unique_ptr<scale::ScaleCorrectionPolicy> policy_;
 	int snapshot_every_ = 0;
 	BoundedSample<ScaleSnapshot> snapshots_{24};  ///< spread over the drive, bounded however long it is

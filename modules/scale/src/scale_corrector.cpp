@@ -35,18 +35,30 @@ bool finitePose(const Eigen::Isometry3d& T) { return T.matrix().allFinite(); }
 
 ScaleCorrector::ScaleCorrector(const ScaleOptions& opt) : opt_(opt) { opt_.validate(); }
 
-ScaleEstimate ScaleCorrector::estimate(const Frame& prev, const Frame& cur, const Eigen::Isometry3d& cur_T_prev) const
+ScaleEstimate ScaleCorrector::estimate(
+	const Frame& prev, const Frame& cur, const Eigen::Isometry3d& cur_T_prev, PyramidReuse* reuse) const
 {
 	if (!prev.has_image || !cur.has_image || !prev.has_scan)
 		failInput("scale corrector", "needs the image and scan of C(i-1) and the image of C(i)");
 	if (!prev.rig.has_camera || !prev.rig.has_lidar)
 		failInput("scale corrector", "the sensor rig needs a camera and a LiDAR");
-	return estimate(prev.image.asCvMatRef(), prev.scan, cur.image.asCvMatRef(), prev.rig.camera,
-		prev.rig.camera_T_lidar(), cur_T_prev);
+	const bool have_prev = reuse && reuse->frame == prev.index && !reuse->pyramid.empty();
+	LkPyramid cur_pyramid;
+	const ScaleEstimate e = estimate(prev.image.asCvMatRef(), prev.scan, cur.image.asCvMatRef(), prev.rig.camera,
+		prev.rig.camera_T_lidar(), cur_T_prev, have_prev ? &reuse->pyramid : nullptr, reuse ? &cur_pyramid : nullptr);
+	if (reuse) *reuse = {cur.index, std::move(cur_pyramid)};
+	return e;
+}
+
+ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prev, const PointCloud& prevScan, const cv::Mat& cur,
+	const PinholeCamera& cam, const Eigen::Isometry3d& camera_T_lidar, const Eigen::Isometry3d& cur_T_prev) const
+{
+	return estimate(prev, prevScan, cur, cam, camera_T_lidar, cur_T_prev, nullptr, nullptr);
 }
 
 ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& prevScan, const cv::Mat& curIn,
-	const PinholeCamera& cam, const Eigen::Isometry3d& camera_T_lidar, const Eigen::Isometry3d& cur_T_prev) const
+	const PinholeCamera& cam, const Eigen::Isometry3d& camera_T_lidar, const Eigen::Isometry3d& cur_T_prev,
+	const LkPyramid* prev_pyramid, LkPyramid* cur_pyramid) const
 {
 	if (!cam.valid()) failInput("scale corrector", "invalid camera intrinsics");
 	auto t0 = SteadyClock::now();
@@ -94,7 +106,10 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 		for (int r = 0; r < 3; ++r)
 			for (int c = 0; c < 3; ++c) H(r, c) = h(r, c);
 	}
-	const auto tracks = trackPoints(prev, cur, pts, opt_, H);
+	LkPyramid built_prev, built_cur = buildLkPyramid(cur, opt_);
+	if (!prev_pyramid) built_prev = buildLkPyramid(prev, opt_);
+	const auto tracks = trackPoints(prev_pyramid ? *prev_pyramid : built_prev, built_cur, cur.size(), pts, opt_, H);
+	if (cur_pyramid) *cur_pyramid = std::move(built_cur);
 	for (size_t i = 0; i < tracks.size(); ++i)
 	{
 		auto& d = e.keypoints[i];

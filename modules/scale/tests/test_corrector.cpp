@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <utility>
 
 #include "synthetic_scene.h"
 
@@ -50,6 +51,18 @@ void print(const char* what, const ScaleEstimate& e)
 				"epipolar %d gradient %d triangulated %d inliers %d\n",
 		what, toString(e.reason), e.scale, e.spread, c.projected, c.corner, c.gradient, c.direction, c.selected, c.tracked,
 		c.epipolar_kept, c.gradient_kept, c.triangulated, c.inliers);
+}
+
+/// The pair as the pipeline's frames C(i-1) (image, scan, rig) and C(i) (image, rig).
+std::pair<Frame, Frame> framesOf(const FramePair& p)
+{
+	Frame prev, cur;
+	prev.has_image = prev.has_scan = cur.has_image = true;
+	prev.image = mrpt::img::CImage(p.prev, mrpt::img::SHALLOW_COPY);
+	cur.image = mrpt::img::CImage(p.cur, mrpt::img::SHALLOW_COPY);
+	prev.scan = p.scan;
+	prev.rig = cur.rig = p.rig;
+	return {prev, cur};
 }
 
 ScaleEstimate run(const FramePair& p, const ScaleOptions& opt, double k, const PointCloud* scan = nullptr)
@@ -182,16 +195,41 @@ TEST(ScaleCorrector, Deterministic)
 TEST(ScaleCorrector, FrameOverloadMatches)
 {
 	const FramePair& p = densePair();
-	Frame prev, cur;
-	prev.has_image = prev.has_scan = cur.has_image = true;
-	prev.image = mrpt::img::CImage(p.prev, mrpt::img::SHALLOW_COPY);
-	cur.image = mrpt::img::CImage(p.cur, mrpt::img::SHALLOW_COPY);
-	prev.scan = p.scan;
-	prev.rig = cur.rig = p.rig;
+	auto [prev, cur] = framesOf(p);
 	const ScaleEstimate e = ScaleCorrector().estimate(prev, cur, withScaledTranslation(p.cur_T_prev, 1.3));
 	EXPECT_EQ(e.scale, run(p, ScaleOptions{}, 1.3).scale);
 	cur.has_image = false;
 	EXPECT_THROW(ScaleCorrector().estimate(prev, cur, p.cur_T_prev), InputError);
+}
+
+TEST(ScaleCorrector, TakesThePreviousFramesPyramidOnlyWhenItIsThatFrames)
+{
+	const FramePair& p = densePair();
+	auto [prev, cur] = framesOf(p);
+	prev.index = 4, cur.index = 5;
+	const ScaleOptions opt;
+	const ScaleCorrector sc(opt);
+	const auto motion = withScaledTranslation(p.cur_T_prev, 1.3);
+	const ScaleEstimate plain = sc.estimate(prev, cur, motion);
+	ASSERT_TRUE(plain.valid);
+	const auto tracked = [](const ScaleEstimate& e) {
+		std::vector<cv::Point2f> v;
+		for (const auto& k : e.keypoints) v.push_back(k.cur);
+		return v;
+	};
+	// prev's own pyramid: the same estimate; afterwards the reuse holds cur's.
+	PyramidReuse reuse{4, buildLkPyramid(p.prev, opt)};
+	const ScaleEstimate same = sc.estimate(prev, cur, motion, &reuse);
+	EXPECT_EQ(same.scale, plain.scale);
+	EXPECT_EQ(tracked(same), tracked(plain));
+	EXPECT_EQ(reuse.frame, 5u);
+	EXPECT_FALSE(reuse.pyramid.empty());
+	// A pyramid said to be prev's is taken as it is (here a wrong one: other tracks) ...
+	reuse = {4, buildLkPyramid(p.cur, opt)};
+	EXPECT_NE(tracked(sc.estimate(prev, cur, motion, &reuse)), tracked(plain));
+	// ... and one of another frame is not.
+	reuse = {3, buildLkPyramid(p.cur, opt)};
+	EXPECT_EQ(tracked(sc.estimate(prev, cur, motion, &reuse)), tracked(plain));
 }
 
 TEST(ScaleCorrector, NoEstimateWithoutMotionOrWithABackwardTranslation)

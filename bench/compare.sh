@@ -5,9 +5,12 @@
 # the process's CPU per frame including reading (user + sys), the wall time; then per binary the
 # medians over the rounds and the throughput (1-thread wall over 2-thread wall).
 # Usage: bench/compare.sh ROUNDS OUT_DIR INI A_BIN A_RAWLOG B_BIN B_RAWLOG
+# INI may be A_INI:B_INI, one configuration per binary (a change of settings against the old ones).
 set -euo pipefail
 [[ $# -eq 7 ]] || { echo "usage: $0 ROUNDS OUT_DIR INI A_BIN A_RAWLOG B_BIN B_RAWLOG" >&2; exit 2; }
-rounds=$1 out=$2 ini=$3
+rounds=$1 out=$2
+IFS=: read -r ini_a ini_b <<< "$3"
+inis=("$ini_a" "${ini_b:-$ini_a}")
 bins=("$4" "$6") rawlogs=("$5" "$7")
 mkdir -p "$out"
 : > "$out/runs.txt"
@@ -17,7 +20,7 @@ for r in $(seq 1 "$rounds"); do
 		name=$(printf '%s_t%s_r%s' "$(echo AB | cut -c$((k + 1)))" "$threads" "$r") dir=$out/$name cores=1
 		[[ $threads == 2 ]] && cores=0,1
 		/usr/bin/time -f "%e %U %S" -o "$dir.time" taskset -c $cores "${bins[$k]}/vlo-run" --rawlog "${rawlogs[$k]}" \
-			--ini "$ini" --set pipeline.mode=vlo --set pipeline.threads="$threads" --set pipeline.snapshots=false \
+			--ini "${inis[$k]}" --set pipeline.mode=vlo --set pipeline.threads="$threads" --set pipeline.snapshots=false \
 			--out "$dir" --overwrite --quiet > "$dir.log" 2>&1
 		read -r wall user sys < "$dir.time"
 		awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "ms_total") c = i; next } { print $c }' "$dir/frames.csv" |

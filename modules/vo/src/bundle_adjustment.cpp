@@ -5,6 +5,7 @@
 #include <memory>
 #include <unordered_map>
 
+#include "bundle_solver.h"
 #include "reprojection_error.h"
 
 namespace vlo::vo
@@ -63,37 +64,24 @@ bool isOutlier(const BundleProblem& p, const BundleProblem::Obs& o, double chi2)
 /// One pass: robust over every observation, or plain squares over the current inliers.
 void solvePass(BundleProblem& p, int its, bool robust, double chi2)
 {
-	ceres::HuberLoss huber(std::sqrt(chi2));
-	// The residuals live here, not in the problem: block allocations instead of one per
-	// observation, and no reference counting by the problem (a deque: cost functions cannot move).
-	std::deque<detail::ReprojectionError> residuals;
-	detail::PoseRotations rotations(p.poses.size());
-	ceres::Problem problem(detail::problemOptions());
-	for (const auto& o : p.obs)
+	std::vector<char> active(p.obs.size(), 0), seen(p.poses.size(), 0);
+	bool any = false;
+	for (std::size_t o = 0; o < p.obs.size(); ++o)
+		if (robust || !isOutlier(p, p.obs[o], chi2)) active[o] = 1, seen[p.obs[o].pose] = 1, any = true;
+	if (!any) return;
+	// Held: the fixed keyframes, poses without an observation in this pass, and the gauge.
+	std::vector<char> held(p.poses.size(), 0);
+	int fixed_seen = 0;
+	for (std::size_t i = 0; i < p.poses.size(); ++i)
 	{
-		if (!robust && isOutlier(p, o, chi2)) continue;
-		problem.AddResidualBlock(&residuals.emplace_back(o.px, o.inv_scale, p.cam, &rotations, o.pose), robust ? &huber : nullptr,
-			p.poses[o.pose].data(), p.points[o.point].data());
+		held[i] = i >= p.n_local || !seen[i];
+		fixed_seen += i >= p.n_local && seen[i] ? 1 : 0;
 	}
-	if (problem.NumResidualBlocks() == 0) return;
-	int held = 0;
-	for (std::size_t i = p.n_local; i < p.poses.size(); ++i)
-		if (problem.HasParameterBlock(p.poses[i].data())) problem.SetParameterBlockConstant(p.poses[i].data()), ++held;
 	// Monocular gauge: without fixed keyframes, hold one (7th dof, scale, is left to damping).
-	if (p.gauge != p.npos && (p.gauge_always || held == 0) && problem.HasParameterBlock(p.poses[p.gauge].data()))
-		problem.SetParameterBlockConstant(p.poses[p.gauge].data());
-	// The Schur complement eliminates the points: said here, Ceres need not search the problem's
-	// graph for an independent set each solve.
-	ceres::Solver::Options options = detail::solverOptions(its);
-	options.linear_solver_ordering = std::make_shared<ceres::ParameterBlockOrdering>();
-	for (auto& X : p.points)
-		if (problem.HasParameterBlock(X.data())) options.linear_solver_ordering->AddElementToGroup(X.data(), 0);
-	for (auto& pose : p.poses)
-		if (problem.HasParameterBlock(pose.data())) options.linear_solver_ordering->AddElementToGroup(pose.data(), 1);
-	ceres::Solver::Summary summary;
-	ceres::Solve(options, &problem, &summary);
-	if (robust) p.stats.initial_cost = summary.initial_cost;
-	p.stats.final_cost = summary.final_cost;
+	if (p.gauge != p.npos && (p.gauge_always || fixed_seen == 0) && seen[p.gauge]) held[p.gauge] = 1;
+	const detail::BundleSolveReport rep = detail::solveBundleLm(p, active, held, robust ? std::sqrt(chi2) : 0.0, its);
+	if (robust) p.stats.initial_cost = rep.initial_cost;
+	p.stats.final_cost = rep.final_cost;
 }
 }  // namespace
 

@@ -79,24 +79,4 @@ void toParams(const SE3& T, double* p)
 }
 
 SE3 fromParams(const double* p) { return makeSE3(rotationFromParams(p), Vec3(p[3], p[4], p[5])); }
-
-ceres::Solver::Options solverOptions(int iterations)
-{
-	ceres::Solver::Options o;
-	o.max_num_iterations = iterations;
-	o.linear_solver_type = ceres::DENSE_SCHUR;
-	o.num_threads = 1;  // deterministic runs
-	o.logging_type = ceres::SILENT;
-	o.minimizer_progress_to_stdout = false;
-	return o;
-}
-
-ceres::Problem::Options problemOptions()
-{
-	ceres::Problem::Options po;
-	po.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-	po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-	po.disable_all_safety_checks = true;  // well-formed blocks; saves hash lookups per residual
-	return po;
-}
 }  // namespace vlo::vo::detail

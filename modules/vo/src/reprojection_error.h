@@ -66,7 +66,4 @@ class ReprojectionError : public ceres::SizedCostFunction<2, 6, 3>
 
 void toParams(const SE3& T, double* p);
 SE3 fromParams(const double* p);
-ceres::Solver::Options solverOptions(int iterations);
-/// For problems whose residuals and loss the caller owns (and keeps until the solve is done).
-ceres::Problem::Options problemOptions();
 }  // namespace vlo::vo::detail

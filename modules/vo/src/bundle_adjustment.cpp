@@ -1,8 +1,6 @@
 // Bundle adjustment of a keyframe window in the frame of its earliest keyframe (paper III-C).
 #include <vlo/vo/bundle_problem.h>
 
-#include <deque>
-#include <memory>
 #include <unordered_map>
 
 #include "bundle_solver.h"

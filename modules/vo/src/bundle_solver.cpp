@@ -14,14 +14,9 @@ namespace vlo::vo::detail
 {
 namespace
 {
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat63 = Eigen::Matrix<double, 6, 3>;
 using Mat26 = Eigen::Matrix<double, 2, 6, Eigen::RowMajor>;
 using Mat23 = Eigen::Matrix<double, 2, 3, Eigen::RowMajor>;
-
-/// Huber's rho of a chi2 (the cost Ceres reports), or the chi2 itself.
-double rho(double s, double a) { return a > 0 && s > a * a ? 2 * a * std::sqrt(s) - a * a : s; }
 
 /// One observation linearised at the current estimate.
 struct Linearised
@@ -36,7 +31,7 @@ class Solver
 {
    public:
 	Solver(BundleProblem& p, const std::vector<char>& active, const std::vector<char>& held, double huber)
-		: p_(p), huber_(huber), weight_(huber > 0 ? RobustWeight::Huber : RobustWeight::None, huber), rotations_(p.poses.size())
+		: p_(p), weight_(huber > 0 ? RobustWeight::Huber : RobustWeight::None, huber), rotations_(p.poses.size())
 	{
 		// Free poses and points, numbered; each point's active observations.
 		pose_slot_.assign(p.poses.size(), -1);
@@ -103,32 +98,29 @@ class Solver
 		return cost;
 	}
 
+	/// The chi2 of active observation k at the current estimate.
+	double squaredResidual(std::size_t k)
+	{
+		const auto& o = p_.obs[obs_[k]];
+		const double* params[2] = {p_.poses[o.pose].data(), p_.points[o.point].data()};
+		Eigen::Vector2d r;
+		errors_[k].Evaluate(params, r.data(), nullptr);
+		return r.squaredNorm();
+	}
+
 	/// 1/2 sum w r^2 at the current estimate with the weights of the last linearisation.
 	double weightedCost()
 	{
 		double cost = 0;
-		for (std::size_t k = 0; k < obs_.size(); ++k)
-		{
-			const auto& o = p_.obs[obs_[k]];
-			const double* params[2] = {p_.poses[o.pose].data(), p_.points[o.point].data()};
-			Eigen::Vector2d r;
-			errors_[k].Evaluate(params, r.data(), nullptr);
-			cost += 0.5 * lin_[k].w * r.squaredNorm();
-		}
+		for (std::size_t k = 0; k < obs_.size(); ++k) cost += 0.5 * lin_[k].w * squaredResidual(k);
 		return cost;
 	}
 
+	/// 1/2 sum rho(r^2) at the current estimate.
 	double robustCost()
 	{
 		double cost = 0;
-		for (std::size_t k = 0; k < obs_.size(); ++k)
-		{
-			const auto& o = p_.obs[obs_[k]];
-			const double* params[2] = {p_.poses[o.pose].data(), p_.points[o.point].data()};
-			Eigen::Vector2d r;
-			errors_[k].Evaluate(params, r.data(), nullptr);
-			cost += 0.5 * rho(r.squaredNorm(), huber_);
-		}
+		for (std::size_t k = 0; k < obs_.size(); ++k) cost += 0.5 * weight_.rho(squaredResidual(k));
 		return cost;
 	}
 
@@ -214,7 +206,6 @@ class Solver
 	}
 
 	BundleProblem& p_;
-	double huber_;
 	RobustWeight weight_;
 	PoseRotations rotations_;
 	int n_free_ = 0;

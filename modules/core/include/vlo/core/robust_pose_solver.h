@@ -26,6 +26,13 @@ class RobustWeight
 		if (kind_ == Cauchy) return 1.0 / (1.0 + s * inv_a2_);
 		return 1.0;
 	}
+	/// rho(s) itself (the robust cost, as Ceres reports it).
+	double rho(double s) const
+	{
+		if (kind_ == Huber) return s > a2_ ? 2 * a_ * std::sqrt(s) - a2_ : s;
+		if (kind_ == Cauchy) return a2_ * std::log1p(s * inv_a2_);
+		return s;
+	}
 
    private:
 	Kind kind_;

@@ -8,6 +8,7 @@
 #include <vlo/kernel/scale_correction.h>
 #include <vlo/kernel/visual_odometry.h>
 #include <vlo/pipeline/pipeline_options.h>
+#include <vlo/pipeline/point_times.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -29,6 +30,8 @@ RunConfig loadEverySection()
 	auto config = RunConfig::fromString("", "none.ini");
 	PipelineOptions pipeline;
 	config.load(pipeline, "pipeline");
+	PointTimeOptions times;
+	config.load(times, "lidar");
 	for (auto& [name, m] : registry<VisualOdometryModule>().createAll()) m->configure(config);
 	for (auto& [name, m] : registry<ScaleCorrectionModule>().createAll()) m->configure(config, 0);
 	for (auto& [name, m] : registry<LidarOdometryModule>().createAll()) m->configure(config);

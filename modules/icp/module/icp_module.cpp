@@ -25,7 +25,7 @@ class IcpModule : public LidarOdometryModule
 		table.set("lo_prior", r.prediction);
 		table.set("lo_points", static_cast<long long>(r.n_valid));
 		table.set("lo_icp_source", static_cast<long long>(r.n_source));
-		table.set("lo_icp_deskew", std::string(icp::toString(r.deskew)));
+		table.set("lo_icp_deskew", r.deskewed);
 		table.set("lo_map_iterations", static_cast<long long>(r.registration.iterations));
 		table.set("lo_map_rms_m", r.registration.rms, 4);
 		table.set("lo_map_matches", static_cast<long long>(r.registration.correspondences));

@@ -42,13 +42,6 @@ Eigen::Isometry3d IcpOdometry::predict(const std::optional<Eigen::Isometry3d>& g
 	return plausible ? *guess : velocity_;
 }
 
-SweepTimes IcpOdometry::sweepTimes(const PointCloud& scan) const
-{
-	if (!opt_.deskew) return SweepTimes::None;
-	if (scan.has_time) return SweepTimes::PerPoint;
-	return opt_.deskew_from_azimuth ? SweepTimes::Azimuth : SweepTimes::None;
-}
-
 IcpResult IcpOdometry::process(double t, const PointCloud& scan, const std::optional<Eigen::Isometry3d>& guess)
 {
 	IcpResult r;
@@ -57,10 +50,10 @@ IcpResult IcpOdometry::process(double t, const PointCloud& scan, const std::opti
 	auto clock = SteadyClock::now();
 	const Eigen::Isometry3d motion = started_ ? predict(guess, r) : Eigen::Isometry3d::Identity();
 	const Eigen::Isometry3d predicted = pose_ * motion;
-	r.deskew = started_ ? sweepTimes(scan) : SweepTimes::None;
+	r.deskewed = started_ && scan.has_time;
 	// KISS-ICP keeps the scan at half the voxel size for the map and registers a coarser subset.
 	const Points frame = voxelDownsample(
-		cropRange(deskew(scan, r.deskew, motion, t - last_t_), opt_.min_range, opt_.max_range), 0.5 * opt_.voxel_size);
+		cropRange(deskew(scan, motion, t - last_t_), opt_.min_range, opt_.max_range), 0.5 * opt_.voxel_size);
 	const Points source = voxelDownsample(frame, 1.5 * opt_.voxel_size);
 	r.n_valid = frame.size();
 	r.n_source = source.size();

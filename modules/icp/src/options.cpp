@@ -14,8 +14,6 @@ void IcpOptions::declare(OptionTable& t)
 	t.add("min_motion", min_motion, ">= 0", "smaller model deviations do not update the threshold [m]");
 	t.add("max_iterations", max_iterations, ">= 1", "Gauss-Newton iterations per frame");
 	t.add("convergence", convergence, "> 0", "update norm that ends the iterations");
-	t.add("deskew", deskew, "true | false", "undistort with the predicted motion (per-point times)");
-	t.add("deskew_from_azimuth", deskew_from_azimuth, "true | false", "scans without times: times from the azimuth (not for motion-compensated scans)");
 	t.add("max_guess_translation", max_guess_translation, "> 0", "longer external motion guesses are ignored [m]");
 	t.add("max_guess_rotation_deg", max_guess_rotation_deg, "(0, 180]", "external guesses turning more are ignored [deg]");
 }

@@ -8,12 +8,12 @@ namespace vlo::icp::test
 {
 TEST(IcpOptions, LoadsTheGivenKeysAndKeepsTheOtherDefaults)
 {
-	mrpt::config::CConfigFileMemory ini("[icp]\nvoxel_size = 0.5\ndeskew_from_azimuth = true\n");
+	mrpt::config::CConfigFileMemory ini("[icp]\nvoxel_size = 0.5\nmax_iterations = 30\n");
 	IcpOptions back;
 	back.loadFromConfigFile(ini, "icp");
 	EXPECT_EQ(back.max_points_per_voxel, 20);
 	EXPECT_EQ(back.voxel_size, 0.5);
-	EXPECT_TRUE(back.deskew_from_azimuth);
+	EXPECT_EQ(back.max_iterations, 30);
 	EXPECT_NO_THROW(back.validate());
 }
 

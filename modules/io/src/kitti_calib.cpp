@@ -182,4 +182,12 @@ Matrix34d KittiRawCalib::projection() const
 	T4.topRows<3>() = velo_to_cam;
 	return P_rect * R4 * T4;
 }
+
+Eigen::Isometry3d readKittiImuToVelo(const std::string& imu_to_velo)
+{
+	const KittiCalibFile f(imu_to_velo);
+	Matrix34d M;
+	M << f.matrix33("R"), f.vector3("T");
+	return rigidOrFail(M, imu_to_velo, "R, T");
+}
 }  // namespace vlo

@@ -70,6 +70,15 @@ void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig,
 			if (s.scan.empty())
 				failInput(files.scan, dropped > 0 ? "every point is NaN or infinite" : "empty scan (no point)");
 			if (dropped > 0 && scans_with_invalid++ == 0) first_invalid = files.scan;
+			if (files.motion_compensated)
+			{
+				for (LidarPoint& p : s.scan) p.time = 0.0f;
+				s.scan.has_time = true;
+			}
+			else if (files.sweep)
+				setTimesFromAzimuth(s.scan, *files.sweep);
+			if (s.scan.has_time)
+				for (LidarPoint& p : s.scan) p.intensity *= 255.0f;
 			summary.invalid_points += dropped;
 			s.has_scan = true;
 			s.rig = rig;

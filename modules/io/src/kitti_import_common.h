@@ -1,9 +1,11 @@
 #pragma once
 // What both KITTI importers share: numbered data files, and writing frames to a rawlog.
 #include <vlo/core/frame.h>
+#include <vlo/core/sweep_times.h>
 #include <vlo/io/kitti_import.h>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,10 +21,16 @@ struct KittiFrameFiles
 	std::size_t index = 0;
 	double t_image = 0, t_scan = 0;
 	std::string image, scan;
+	/// KITTI odometry's scans are motion-compensated: every point is written at the scan's time (0).
+	/// A raw sweep is written with times from its azimuth and `sweep` when the recording has the
+	/// sweep's stamps, else without times.
+	bool motion_compensated = true;
+	std::optional<SpinningSweep> sweep;
 };
 
 /// Writes the frames (image, then scan, each at its own time) to summary.rawlog through a
-/// RawlogWriter, with a progress line. A rig camera of size 0 takes the first image's size;
+/// RawlogWriter, with a progress line. Scans with times are written as Velodyne scans, whose
+/// intensity is 8-bit: KITTI's reflectance in [0, 1] goes in as 0-255. A rig camera of size 0 takes the first image's size;
 /// every image must have the rig camera's size. Fills the counts of `summary`.
 void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig, const std::string& camera_label,
 	const std::string& lidar_label, const std::string& progress_label, ImportSummary& summary);

@@ -150,6 +150,11 @@ TEST(KittiRawBuilt, TimestampsOfEachSensorAreUsed)
 		<< "2011-09-26 13:02:25.964389445\n2011-09-26 13:02:26.068749856\n2011-09-26 13:02:26.173079061\n";
 	std::ofstream(drive + "/velodyne_points/timestamps.txt")
 		<< "2011-09-26 13:02:25.951199\n2011-09-26 13:02:26.054651\n2011-09-26 13:02:26.158214\n";
+	// Each sweep from 52 ms before its stamp to 52 ms after (the stamp: facing forward, half-way).
+	std::ofstream(drive + "/velodyne_points/timestamps_start.txt")
+		<< "2011-09-26 13:02:25.899199\n2011-09-26 13:02:26.002651\n2011-09-26 13:02:26.106214\n";
+	std::ofstream(drive + "/velodyne_points/timestamps_end.txt")
+		<< "2011-09-26 13:02:26.003199\n2011-09-26 13:02:26.106651\n2011-09-26 13:02:26.210214\n";
 	KittiRawImport opt;
 	opt.drive = drive;
 	opt.calib = raw;
@@ -163,14 +168,23 @@ TEST(KittiRawBuilt, TimestampsOfEachSensorAreUsed)
 	Frame f;
 	ASSERT_TRUE(reader.next(f));
 	EXPECT_NEAR(f.t, 1317042145.964389445, 1e-6);  // a pair carries the image time
+	// The one return, straight ahead, was taken at the scan's stamp: 13.19 ms before the image.
+	ASSERT_TRUE(f.scan.has_time);
+	EXPECT_NEAR(f.scan[0].time, 25.951199 - 25.964389445, 2e-6);
 	EXPECT_NEAR(f.rig.camera.fx, 721.5377, 1e-9);
 	EXPECT_EQ(reader.stats().unpaired_images + reader.stats().unpaired_scans, 0u);
 
 	fs::remove(drive + "/velodyne_points/timestamps.txt");  // LiDAR borrows the camera's times
-	importKittiRaw(opt);
+	const auto borrowed = importKittiRaw(opt);  // and without its own stamp no sweep can be timed
+	ASSERT_EQ(borrowed.warnings.size(), 1u);
+	EXPECT_NE(borrowed.warnings[0].find("without point times"), std::string::npos) << borrowed.warnings[0];
 	RawlogReader again(opt.out);
 	std::size_t n = 0;
-	while (again.next(f)) ++n;
+	while (again.next(f))
+	{
+		EXPECT_FALSE(f.scan.has_time);
+		++n;
+	}
 	EXPECT_EQ(n, 3u);
 
 	opt.camera = 1;  // no image_01

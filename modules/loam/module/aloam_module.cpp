@@ -40,6 +40,8 @@ class AloamModule : public LidarOdometryModule
 		table.set("lo_status", std::string(loam::toString(r.status)));
 		table.set("lo_prior", r.prior_source);
 		table.set("lo_guess_stage", r.external_stage);
+		table.set("lo_guess_fit_external", r.guess_fit_external, 1);
+		table.set("lo_guess_fit_cv", r.guess_fit_constant_velocity, 1);
 		table.set("lo_points", static_cast<long long>(r.n_valid));
 		table.set("lo_sharp", static_cast<long long>(r.n_sharp));
 		table.set("lo_flat", static_cast<long long>(r.n_flat));

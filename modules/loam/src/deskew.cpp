@@ -17,24 +17,25 @@ Eigen::Isometry3d scaleMotion(const Eigen::Isometry3d& motion, double a)
 	return out;
 }
 
-void deskew(ScanPoints& points, const Eigen::Isometry3d& motion, double reference)
+void deskew(ScanPoints& points, const Eigen::Isometry3d& motion, double dt)
 {
-	// Exact transforms at 1024 time steps over [lo, hi], the sweep [0, 1] widened to the points'
-	// times (the sensor's times may start before or end after it), one trig evaluation per step, not
+	// Exact transforms at 1024 time steps over the points' times, one trig evaluation per step, not
 	// per point. Each point blends the two steps around its time: the nearest step alone was off by
-	// up to 1/2048 of the span's motion (0.9 mm at 1.2 m per sweep, every point of a sensor's sweep
-	// spanning [0.5, 1.5]); blended, the error is second order in the step (micrometres).
+	// up to 1/2048 of the span's motion (0.9 mm at 1.2 m per sweep); blended, the error is second
+	// order in the step (micrometres).
 	// Constant twist, not A-LOAM's scaled angle and chord (scaleMotion): in a turn the sensor moves on
 	// an arc, and the chord puts both ends of the sweep off it to the same side.
 	constexpr int kSteps = 1024;
-	const Vector6d xi = logTwist(motion);
-	float lo = 0.0f, hi = 1.0f;
+	if (points.empty() || !(dt > 0)) return;
+	const Vector6d xi = logTwist(motion) / dt;  // per second
+	float lo = points.front().time, hi = lo;
 	for (const ScanPoint& p : points) lo = std::min(lo, p.time), hi = std::max(hi, p.time);
+	if (!(hi > lo)) hi = lo + 1e-6f;
 	std::array<Eigen::Matrix3f, kSteps + 1> R;
 	std::array<Eigen::Vector3f, kSteps + 1> t;
 	for (int k = 0; k <= kSteps; ++k)
 	{
-		const Eigen::Isometry3d T = expTwist((lo + static_cast<double>(hi - lo) * k / kSteps - reference) * xi);
+		const Eigen::Isometry3d T = expTwist((lo + static_cast<double>(hi - lo) * k / kSteps) * xi);
 		R[k] = T.linear().cast<float>();
 		t[k] = T.translation().cast<float>();
 	}

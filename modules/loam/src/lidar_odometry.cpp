@@ -3,6 +3,7 @@
 #include <vlo/core/se3.h>
 #include <vlo/core/se3_twist.h>
 #include <vlo/core/stopwatch.h>
+#include <vlo/loam/cold_start.h>
 #include <vlo/loam/deskew.h>
 
 namespace vlo::loam
@@ -71,6 +72,23 @@ LidarOdometryResult LidarOdometry::skip(LidarOdometryResult r, const std::string
 	t_prev_ = r.t;
 	++frames_;
 	return r;
+}
+
+void LidarOdometry::checkExternalGuess(const FeatureSet& f, const Eigen::Isometry3d& cv, LidarOdometryResult& r) const
+{
+	const PriorOptions& o = opt_.prior;
+	const Eigen::Isometry3d d = cv.inverse() * r.guess;
+	if (o.check_deviation <= 0 || !opt_.mapping.enabled || mapper_.empty() ||
+		(d.translation().norm() < o.check_deviation && rotationAngle(d.linear()) * 180.0 / M_PI < o.check_deviation_deg))
+		return;
+	const ScanToMap::Input in = mapper_.prepare(f);
+	r.guess_fit_external = mapper_.planeFit(in, pose_ * r.guess);
+	r.guess_fit_constant_velocity = mapper_.planeFit(in, pose_ * cv);
+	if (r.guess_fit_constant_velocity > (1.0 + o.check_margin) * r.guess_fit_external)
+	{
+		r.guess = cv;
+		r.prior_source = "constant_velocity (external fits the map worse)";
+	}
 }
 
 // Scan-to-scan then scan-to-map for features f; sets the status and the odometry/map poses.
@@ -150,21 +168,27 @@ LidarOdometryResult LidarOdometry::process(
 	// Without deskewing, one registration. With it, the sweep is undistorted by the guessed motion,
 	// registered, and undistorted again by the motion found while that changes it noticeably (at
 	// the start, when the guess knows nothing, and when the motion changes). The map and the next
-	// scan get the features undistorted by the final motion. The sensor's per-point times are
-	// always used (point_times); times from the azimuth only with deskew.
-	const bool deskewable = opt_.scan.deskew || scan.times_from_data;
+	// scan get the features undistorted by the final motion. Only a scan with point times (the
+	// sensor's, or from the azimuth: [lidar] point_times) is deskewed.
+	const bool deskewable = scan.times_from_data;
 	const bool undistort = deskewable && frames_ && t_prev_ && t > *t_prev_;
 	const auto deskewed = [&](const FeatureSet& src, const Eigen::Isometry3d& motion) {
-		// The motion spans the time since the previous frame; deskewing needs one sweep's.
-		const Eigen::Isometry3d sweep = expTwist(opt_.scan.scan_period / (t - *t_prev_) * logTwist(motion));
 		FeatureSet d = src;
-		for (ScanPoints* s : {&d.sharp, &d.less_sharp, &d.flat, &d.less_flat}) deskew(*s, sweep, opt_.scan.deskew_reference);
+		for (ScanPoints* s : {&d.sharp, &d.less_sharp, &d.flat, &d.less_flat}) deskew(*s, motion, t - *t_prev_);
 		r.ms.add("odometry", lapMs(t0));
 		return d;
 	};
 	// The first sweep had no motion to be deskewed with: the second brings one (constant velocity),
 	// so in each of its passes the map and the reference restart from the first sweep deskewed.
 	const bool redo_first = undistort && first_raw_ && frames_ == 1;
+	if (const auto cv = prior_->setAside()) checkExternalGuess(raw, *cv, r);
+	if (frames_ == 1 && r.prior_source != "external" && opt_.odometry.enabled && odometry_.hasReference() &&
+		opt_.odometry.cold_start_range > 0)
+	{
+		r.guess = searchFirstMotion(odometry_, raw, opt_.odometry.cold_start_range, opt_.odometry.cold_start_step).motion;
+		r.prior_source = "cold_start";
+		r.ms.add("odometry", lapMs(t0));
+	}
 	Eigen::Isometry3d motion = r.guess, pose, odom;
 	FeatureSet f = undistort ? deskewed(raw, motion) : std::move(raw);
 	for (r.passes = 1;; ++r.passes)

@@ -60,6 +60,7 @@ Eigen::Isometry3d ExternalPrior::predict(double t, const std::optional<Eigen::Is
 {
 	const Eigen::Isometry3d cv = fallback_.predict(t, std::nullopt);
 	const std::optional<Eigen::Isometry3d> previous = std::exchange(last_external_, std::nullopt);
+	set_aside_.reset();
 	if (!external || !plausible(*external))
 	{
 		source_ = fallback_.lastSource();
@@ -76,6 +77,7 @@ Eigen::Isometry3d ExternalPrior::predict(double t, const std::optional<Eigen::Is
 		return cv;
 	}
 	source_ = "external";
+	if (fallback_.hasVelocity()) set_aside_ = cv;
 	Eigen::Isometry3d T = *external;
 	T.linear() = orthonormalize(T.linear());  // visual odometry output may be slightly off SO(3)
 	return T;

@@ -28,14 +28,7 @@ void ScanOptions::declare(OptionTable& t)
 	t.add("fov_margin_deg", fov_margin_deg, ">= 0", "accepted beyond the extreme beams [deg]");
 	t.add("min_range", min_range, ">= 0", "closer returns are dropped [m]");
 	t.add("max_range", max_range, "any", "farther returns are dropped [m]");
-	t.add("scan_period", scan_period, "> 0", "seconds per sweep");
-	t.add("clockwise", clockwise, "true | false", "sensor spins clockwise seen from above (Velodyne)");
-	t.add("time_from_first_point", time_from_first_point, "true | false", "sweep starts at the first point's azimuth");
-	t.add("sweep_start_azimuth_deg", sweep_start_azimuth_deg, "any", "sweep start when not from the first point [deg]");
-	t.add("deskew", deskew, "true | false", "undistort features with the initial-guess motion (times from the azimuth)");
-	t.add("point_times", point_times, "true | false", "scans with per-point times: deskew with them to the frame's time");
-	t.add("deskew_reference", deskew_reference, "[0, 1]", "sweep fraction [0,1] the scan pose refers to");
-	t.add("max_deskew_passes", max_deskew_passes, "[1, 10]", "deskew + register again while the motion found changes");
+	t.add("max_deskew_passes", max_deskew_passes, "[1, 10]", "scans with point times ([lidar]): deskew + register again while the motion found changes");
 	t.add("deskew_tolerance", deskew_tolerance, ">= 0", "... by more than this [m]");
 	t.add("deskew_tolerance_deg", deskew_tolerance_deg, ">= 0", "... or this [deg]");
 }
@@ -91,6 +84,8 @@ void OdometryOptions::declare(OptionTable& t)
 	t.add("min_correspondences", min_correspondences, ">= 6", "fewer: keep the initial guess");
 	t.add("plane_max_distance", plane_max_distance, ">= 0", "plane match: a fourth reference point (next to the third) must lie this close to it [m] (0: no check)");
 	t.add("max_rounds", max_rounds, ">= 1", "rounds continue past outer_iterations while the pose still moves, up to this many");
+	t.add("cold_start_range", cold_start_range, ">= 0", "first motion of a drive: searched from translations up to this far along x and y (0: from zero only) [m]");
+	t.add("cold_start_step", cold_start_step, "> 0", "... this far apart [m]");
 }
 
 void OdometryOptions::checkRelations() const
@@ -103,7 +98,7 @@ void MappingOptions::declare(OptionTable& t)
 	t.add("enabled", enabled, "true | false", "scan-to-map refinement every frame");
 	declareSolver(t, solver);
 	t.add("edges", edges, "on | off | auto", "edge points matched to lines of the map: on, off (planes only, no edge map), auto (where planes leave the translation weak)");
-	t.add("weak_plane_information", weak_plane_information, ">= 0", "planes whose translation information is below this leave it weak: auto seeks edges (at the guess), no rounds past outer_iterations (at the pose reached)");
+	t.add("weak_plane_information", weak_plane_information, ">= 0", "planes whose translation information is below this leave it weak: auto seeks edges (at the guess); no rounds past outer_iterations where the matches in use leave it so weak (at the pose reached)");
 	t.add("max_rounds", max_rounds, ">= 1", "rounds continue past outer_iterations while the pose still moves and the planes fix the translation, up to this many");
 	t.add("edge_leaf", edge_leaf, "> 0", "downsampling of the scan's edge points [m]");
 	t.add("plane_leaf", plane_leaf, "> 0", "downsampling of the scan's plane points [m]");
@@ -150,6 +145,9 @@ void PriorOptions::declare(OptionTable& t)
 	t.add("external_stage", external_stage, "odometry | mapping | auto", "odometry: the external motion initialises scan-to-scan | mapping: scan-to-map, scan-to-scan skipped | auto: scan-to-scan unless its result is degenerate");
 	t.add("min_translation_information", min_translation_information, ">= 0", "auto: scan-to-scan is degenerate when the smallest eigenvalue of its translation information is below this [plane matches]");
 	t.add("min_weakest_ratio", min_weakest_ratio, "[0, 1]", "... or below this fraction of the next smallest (a corridor)");
+	t.add("check_deviation", check_deviation, ">= 0", "an external motion this far from constant velocity is checked against the map, constant velocity kept where it fits better (0: no check) [m]");
+	t.add("check_deviation_deg", check_deviation_deg, ">= 0", "... or turning this differently [deg]");
+	t.add("check_margin", check_margin, ">= 0", "... better by this fraction of the external motion's fit");
 }
 
 std::vector<std::pair<std::string, OptionSet*>> LoamOptions::parts()

@@ -1,5 +1,7 @@
 #include "vlo/loam/rings.h"
 
+#include <vlo/core/sweep_times.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -8,8 +10,7 @@ namespace vlo::loam
 namespace
 {
 constexpr double kDeg = M_PI / 180.0;
-constexpr float kTwoPi = 6.28318531f;
-constexpr float kMaxSweepsAway = 2.0f;  ///< a point time farther from the frame's is invalid
+constexpr float kMaxSecondsAway = 1.0f;  ///< a point time farther from the frame's is invalid (sweeps last 0.05-0.2 s)
 
 // Rings of a scan that carries the sensor's ids: the highest id below kMaxRings + 1, at least the
 // ring model's count (ids are ordered by elevation, 0 = lowest, as the readers deliver them).
@@ -78,7 +79,7 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 {
 	RingScan out;
 	out.rings_from_data = scan.has_ring;
-	out.times_from_data = scan.has_time && opt_.point_times;
+	out.times_from_data = scan.has_time;
 	const int n_rings = out.rings_from_data ? ringsInData(scan, model_.numRings()) : model_.numRings();
 	out.n_input = scan.size();
 	out.ring_begin.assign(n_rings + 1, 0);
@@ -87,7 +88,6 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 
 	const float min2 = static_cast<float>(opt_.min_range * opt_.min_range);
 	const float max2 = static_cast<float>(opt_.max_range * opt_.max_range);
-	const float per_period = static_cast<float>(1.0 / opt_.scan_period);
 	// Two passes, no intermediate copy: the first keeps the ring of each usable point (-1: dropped)
 	// and counts the rings, the second writes each point straight to its place (a stable counting
 	// sort by ring, which keeps the sensor's order within a ring).
@@ -112,7 +112,7 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 			++out.n_out_of_fov;
 			continue;
 		}
-		if (out.times_from_data && !(std::fabs(lp.time * per_period) <= kMaxSweepsAway))  // NaN too: not a time of this sweep
+		if (out.times_from_data && !(std::fabs(lp.time) <= kMaxSecondsAway))  // NaN too: not a time of this sweep
 		{
 			++out.n_invalid;
 			continue;
@@ -124,10 +124,7 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 	out.points.resize(out.ring_begin.back());
 	std::vector<std::size_t> next(out.ring_begin.begin(), out.ring_begin.end() - 1);
 
-	const float dir = opt_.clockwise ? -1.0f : 1.0f;  // clockwise: azimuth decreases with time
-	const float ref = static_cast<float>(opt_.deskew_reference);
-	float az0 = static_cast<float>(opt_.sweep_start_azimuth_deg * kDeg);
-	bool have_start = !opt_.time_from_first_point;
+	const SpinningSweep ordering;  // without the sensor's times: a Velodyne's turn, only to order each ring
 	for (std::size_t i = 0; i < scan.size(); ++i)
 	{
 		const int ring = ring_of_[i];
@@ -136,21 +133,7 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 		ScanPoint& p = out.points[next[ring]++];
 		p.p = Eigen::Vector3f(lp.x, lp.y, lp.z);
 		p.ring = ring;
-		if (out.times_from_data)
-			p.time = ref + lp.time * per_period;  // the frame's time (0) is the pose's: deskew_reference
-		else
-		{
-			const float az = fastAtan2(lp.y, lp.x);
-			if (!have_start)
-			{
-				az0 = az;
-				have_start = true;
-			}
-			float s = dir * (az - az0) * (1.0f / kTwoPi);  // in (-1, 1)
-			if (s < 0.0f) s += 1.0f;
-			if (s >= 1.0f) s = 0.0f;  // rounding of tiny negative values
-			p.time = s;
-		}
+		p.time = out.times_from_data ? lp.time : static_cast<float>(ordering.timeAt(fastAtan2(lp.y, lp.x)));
 	}
 
 	// Most sensors deliver rings in time order, or rotated by the ring's start offset when the

@@ -130,9 +130,46 @@ TEST(BadInput, NonsenseExternalMotionFallsBack)
 		const LidarOdometryResult r = lo.process(0.1 * i, d.scanAt(i), nan);
 		if (i > 0)
 		{
-			EXPECT_EQ(r.prior_source, "constant_velocity");
+			EXPECT_EQ(r.prior_source, i == 1 ? "cold_start" : "constant_velocity");  // the first motion is searched
 		}
 		EXPECT_LT(translationError(r.pose, T0.inverse() * d.truth(i)), 0.05);
+	}
+}
+}  // namespace vlo::loam::test
+
+namespace vlo::loam::test
+{
+TEST(BadInput, AnExternalGuessThatFitsTheMapWorseIsSetAside)
+{
+	// 1 m per frame; at frame 4 the external motion is 0.4 m off sideways and 1 deg (within the prior's
+	// 0.5 m deviation bound, so it is accepted): against the map the constant-velocity guess fits
+	// better and LOAM starts from it. Without the check (check_deviation = 0) the external guess is used.
+	const Drive d;
+	for (const double check : {0.05, 0.0})
+	{
+		LoamOptions o = vlp16Options();
+		o.prior.source = "external";
+		o.prior.check_deviation = check;
+		LidarOdometry lo(o);
+		const Eigen::Isometry3d T0 = d.truth(0);
+		for (int i = 0; i < 5; ++i)
+		{
+			Eigen::Isometry3d step = d.truth(i - 1).inverse() * d.truth(i);
+			if (i == 4) step = step * planarPose(0.0, 0.4, 1.0);
+			const LidarOdometryResult r = lo.process(0.1 * i, d.scanAt(i), step);
+			if (i < 4) continue;
+			if (check > 0)
+			{
+				EXPECT_EQ(r.prior_source, "constant_velocity (external fits the map worse)");
+				EXPECT_GT(r.guess_fit_constant_velocity, 1.05 * r.guess_fit_external);
+			}
+			else
+			{
+				EXPECT_EQ(r.prior_source, "external");
+				EXPECT_EQ(r.guess_fit_external, 0.0);
+			}
+			EXPECT_LT(translationError(r.pose, T0.inverse() * d.truth(i)), 0.05);
+		}
 	}
 }
 }  // namespace vlo::loam::test

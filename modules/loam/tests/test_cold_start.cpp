@@ -2,6 +2,7 @@
 // motion of a vehicle already driving at up to 35 m/s (3.5 m per 10 Hz frame) is recovered, in any
 // direction, and so is the motion after a gap of several frames.
 #include <gtest/gtest.h>
+#include <vlo/loam/cold_start.h>
 #include <vlo/loam/lidar_odometry.h>
 
 #include <cstdio>
@@ -85,5 +86,43 @@ TEST(ColdStart, DriveAtThirtyMetresPerSecondWithAGap)
 			100 * max_rel);
 		EXPECT_LT(max_rel, 0.01);
 	}
+}
+}  // namespace vlo::loam::test
+
+namespace vlo::loam::test
+{
+TEST(ColdStart, InliersAreTheMatchesWithinTheDistance)
+{
+	// A plane z = 0 and a line along x through (0, 2, 0): moved 5 cm up, the point on the plane
+	// stays within 0.1 m, one moved 0.3 m off the line does not.
+	Matches m;
+	m.planes.push_back(PlaneMatch{Eigen::Vector3d(3, 0, 0), Eigen::Vector3d::UnitZ(), 0.0});
+	m.edges.push_back(EdgeMatch{Eigen::Vector3d(1, 2.3, 0), Eigen::Vector3d(0, 2, 0), Eigen::Vector3d::UnitX()});
+	m.edges.push_back(EdgeMatch{Eigen::Vector3d(7, 2.05, 0), Eigen::Vector3d(0, 2, 0), Eigen::Vector3d::UnitX()});
+	Eigen::Isometry3d up = Eigen::Isometry3d::Identity();
+	up.translation().z() = 0.05;
+	EXPECT_EQ(countInliers(m, up, 0.1), 2);  // the plane point and the second edge point (7 cm off)
+	EXPECT_EQ(countInliers(m, up, 0.04), 0);
+	EXPECT_EQ(countInliers(m, up, 0.4), 3);
+}
+
+TEST(ColdStart, FirstMotionSearchKeepsTheHypothesisThatFitsBest)
+{
+	// 2.6 m forward: the search tries 17 starts (zero, and 0.75-3 m along +-x, +-y) and keeps the
+	// result that fits most features, the true motion.
+	const Path path = straight();
+	const World w = urbanWorld(path, 70);
+	LidarModel m = hdl64();
+	m.noise_sigma = 0.01;
+	std::mt19937 rng(70);
+	const LoamOptions o = hdl64Options();
+	ScanFeatureExtractor fx(o);
+	ScanToScanOdometry odo(o.odometry, fx.model());
+	const Eigen::Isometry3d A = lidarPoseAt(path, 50), delta = planarPose(2.6, 0.1, 1);
+	odo.setReference(fx.extract(scan(w, m, A, &rng)).features);
+	const ColdStart cs = searchFirstMotion(odo, fx.extract(scan(w, m, A * delta, &rng)).features, 3.0, 0.75);
+	EXPECT_EQ(cs.hypotheses, 17);
+	EXPECT_LT(translationError(cs.motion, delta), 0.02);
+	EXPECT_GT(cs.inliers, 500);
 }
 }  // namespace vlo::loam::test

@@ -31,7 +31,7 @@ TEST(Options, SaveThenLoadRoundTrips)
 	LoamOptions a;
 	a.scan.ring_model = "table";
 	a.scan.elevation_table_deg = {-10, -5, 0, 5};
-	a.scan.deskew = true;
+	a.scan.max_deskew_passes = 5;
 	a.features.max_flat = 7;
 	a.odometry.solver.loss = "cauchy";
 	a.odometry.use_kdtree = true;
@@ -49,7 +49,7 @@ TEST(Options, SaveThenLoadRoundTrips)
 	b.load(c);
 	EXPECT_EQ(b.scan.ring_model, "table");
 	EXPECT_EQ(b.scan.elevation_table_deg, a.scan.elevation_table_deg);
-	EXPECT_TRUE(b.scan.deskew);
+	EXPECT_EQ(b.scan.max_deskew_passes, 5);
 	EXPECT_EQ(b.features.max_flat, 7);
 	EXPECT_EQ(b.odometry.solver.loss, "cauchy");
 	EXPECT_TRUE(b.odometry.use_kdtree);

@@ -23,15 +23,16 @@ struct FrameInFlight
 };
 }  // namespace
 
-void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const RunPlan& plan,
-	RunOutputs& outputs, GlobalMap& map, ProgressLine& progress)
+void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const PointTimeOptions& times,
+	const RunPlan& plan, RunOutputs& outputs, GlobalMap& map, ProgressLine& progress)
 {
 	ImageUndistorter undistorter;  // the camera's estimators and snapshots see ideal pinhole images
 	const bool threaded = popt.threadCount() >= 2;
 	// The LiDAR odometry's work on a frame alone (LOAM's features) runs where the frame is read:
 	// with two threads beside both stages, which leaves the stages more even.
-	const auto prepare = [&stages](Frame& f) {
+	const auto prepare = [&stages, &times](Frame& f) {
 		const auto t0 = SteadyClock::now();
+		applyPointTimes(f.scan, times);
 		stages.lidar->prepare(f);
 		f.lidar_prepared_ms = msSince(t0);
 	};
@@ -63,6 +64,7 @@ void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions
 		if (pose)
 		{
 			if (stages.motion) table.set("vo_metric_motion", done.motion.has_value());
+			table.set("lo_point_times", std::string(pointTimeSource(done.frame.scan)));
 			table.setCells(lidarRow);
 			outputs.lidar.push_back({done.frame.t, *pose});
 			table.set("x", pose->translation().x(), 3);

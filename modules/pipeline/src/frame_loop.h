@@ -7,6 +7,7 @@
 #include <vlo/kernel/motion_source.h>
 #include <vlo/pipeline/global_map.h>
 #include <vlo/pipeline/pipeline_options.h>
+#include <vlo/pipeline/point_times.h>
 #include <vlo/pipeline/run_outputs.h>
 
 #include <memory>
@@ -22,8 +23,9 @@ struct Stages
 
 /// Runs the reader's frames (up to [pipeline] max_frames) through the stages: one row of
 /// outputs.table per frame, outputs.lidar, the sample frames, and the scans of map.pcd into `map`.
+/// Each scan gets its point times ([lidar]) before the LiDAR odometry sees it.
 /// With [pipeline] threads 2 the outputs are the same as with 1 (doc/SPEED.md). Returns once every
 /// thread it started has ended, also when it throws.
-void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const RunPlan& plan,
-	RunOutputs& outputs, GlobalMap& map, ProgressLine& progress);
+void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const PointTimeOptions& times,
+	const RunPlan& plan, RunOutputs& outputs, GlobalMap& map, ProgressLine& progress);
 }  // namespace vlo

@@ -85,6 +85,8 @@ RunSummary runPipeline(const RunRequest& req)
 	auto config = RunConfig::fromFile(req.ini, req.overrides);
 	PipelineOptions popt;
 	config.load(popt, "pipeline");
+	PointTimeOptions times;
+	config.load(times, "lidar");
 	const RunPlan plan = popt.plan();
 	Stages stages = makeStages(popt, plan, config);
 	logger().logFmt(mrpt::system::LVL_DEBUG, "mode %s: motion source '%s', LiDAR odometry '%s'", plan.name.c_str(),
@@ -106,7 +108,7 @@ RunSummary runPipeline(const RunRequest& req)
 	GlobalMap globalMap(popt.map_voxel, popt.map_max_range);
 	ProgressLine progress("vlo-run: frame", 0);
 	const auto loopStart = SteadyClock::now();
-	runFrames(reader, stages, popt, plan, outputs, globalMap, progress);
+	runFrames(reader, stages, popt, times, plan, outputs, globalMap, progress);
 	progress.finish();
 	const double loopSeconds = msSince(loopStart) / 1000.0;
 	if (outputs.table.rows() == 0) failInput(req.rawlog, "no frame to process");

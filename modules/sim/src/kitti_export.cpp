@@ -62,7 +62,10 @@ void KittiExporter::write(const Frame& f)
 	const std::string seq = seqDir(partial_);
 	if (f.has_image && !f.image.saveToFile(seq + "/image_0/" + name + ".png"))
 		failInput(seq + "/image_0/" + name + ".png", "cannot write image");
-	if (f.has_scan) writeKittiBin(seq + "/velodyne/" + name + ".bin", f.scan);
+	if (!f.has_scan) return;
+	PointCloud reflectance = f.scan;  // KITTI's reflectance is in [0, 1], the simulated scan's 8-bit
+	for (LidarPoint& p : reflectance) p.intensity /= 255.0f;
+	writeKittiBin(seq + "/velodyne/" + name + ".bin", reflectance);
 }
 
 void KittiExporter::commit(const Trajectory& vehicle_gt)

@@ -85,7 +85,10 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 {
 	PointCloud cloud;
 	cloud.reserve(dirs_.size());
-	cloud.has_time = cloud.has_ring = distortion_;  // a rolling sweep says when and by which beam
+	// A rolling sweep says when and by which beam; the exact sensor takes every return at the frame's
+	// time (0), which [lidar] point_times = auto then keeps rather than deriving times from the azimuth.
+	cloud.has_time = true;
+	cloud.has_ring = distortion_;
 	const int rings = static_cast<int>(model_.elevations_deg.size());
 	// An ideal deskew moves each firing's points into the LiDAR frame at the frame's time (tau = 0).
 	const Eigen::Isometry3d frame_T_world = ideal_deskew_ ? Eigen::Isometry3d(world_T_lidar(0).inverse()) : Eigen::Isometry3d::Identity();
@@ -118,9 +121,9 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 			if (rng.uniform() < noise.dropout || noisy < model_.min_range || noisy > model_.max_range) continue;
 			if (face >= 0 && !moving->returns) continue;  // after the draws: the other returns keep their noise
 			const Eigen::Vector3d p = ideal_deskew_ ? Eigen::Vector3d(to_frame * (noisy * dL)) : Eigen::Vector3d(noisy * dL);
-			// A rolling sweep is written as a Velodyne scan, whose intensity is the sensor's 8-bit reflectivity:
-			// it carries the grey level itself (0-255), so that the rawlog and a KITTI export hold the same value.
-			const float intensity = distortion_ ? float(gray) : float(gray / 255.0);
+			// A scan with times is written as a Velodyne scan, whose intensity is the sensor's 8-bit
+			// reflectivity: the grey level itself (0-255).
+			const float intensity = float(gray);
 			cloud.push_back({float(p.x()), float(p.y()), float(p.z()), intensity, ideal_deskew_ ? 0.0f : float(tau), ringOf_[j]});
 		}
 	}

@@ -27,6 +27,8 @@ struct PointCloud : std::vector<LidarPoint>
 {
 	using std::vector<LidarPoint>::vector;
 	bool has_time = false, has_ring = false;
+	/// The times were derived from the azimuth ([lidar] point_times), not written by the sensor.
+	bool time_from_azimuth = false;
 };
 
 /// Intrinsics of an image and its lens distortion, in MRPT's TCamera convention.

@@ -35,7 +35,7 @@ struct IcpResult
 	Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< sensor in the first sensor frame
 	Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  ///< pose of this frame in the previous
 	std::string prediction;  ///< constant_velocity | external
-	SweepTimes deskew = SweepTimes::None;
+	bool deskewed = false;  ///< undistorted with the scan's point times
 	std::size_t n_input = 0, n_valid = 0, n_source = 0;  ///< given / in range / registered (downsampled)
 	RegistrationResult registration;
 	double sigma = 0;  ///< adaptive threshold used [m]
@@ -59,7 +59,6 @@ class IcpOdometry
 
    private:
 	Eigen::Isometry3d predict(const std::optional<Eigen::Isometry3d>& guess, IcpResult& r) const;
-	SweepTimes sweepTimes(const PointCloud& scan) const;
 
 	IcpOptions opt_;
 	VoxelMap map_;

@@ -17,8 +17,6 @@ struct IcpOptions : public OptionSet
 	double min_motion = 0.1;  ///< model deviations smaller than this do not update sigma [m]
 	int max_iterations = 500;  ///< Gauss-Newton iterations per frame
 	double convergence = 1e-4;  ///< an update smaller than this (norm of the 6-vector) ends them
-	bool deskew = true;  ///< undistort with the predicted motion when the scan has per-point times
-	bool deskew_from_azimuth = false;  ///< no per-point times: derive them from the azimuth (KISS-ICP's rule)
 	double max_guess_translation = 5.0;  ///< an external motion guess longer than this is ignored [m]
 	double max_guess_rotation_deg = 30.0;  ///< ... or turning more than this [deg]
 

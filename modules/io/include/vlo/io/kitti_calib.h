@@ -1,7 +1,8 @@
 #pragma once
 // KITTI calibration files ("KEY: v1 v2 ..." per line) and the rig they imply.
 //  odometry  sequences/NN/calib.txt: P0..P3 (3x4 rectified projections), Tr (velo -> cam0, 3x4)
-//  raw       calib_cam_to_cam.txt: P_rect_0X, R_rect_00, S_rect_0X;  calib_velo_to_cam.txt: R, T
+//  raw       calib_cam_to_cam.txt: P_rect_0X, R_rect_00, S_rect_0X;  calib_velo_to_cam.txt: R, T;
+//            calib_imu_to_velo.txt: R, T
 #include <vlo/core/frame.h>
 
 #include <Eigen/Geometry>
@@ -68,4 +69,7 @@ struct KittiRawCalib
 	Matrix34d projection() const;
 };
 KittiRawCalib readKittiRawCalib(const std::string& cam_to_cam, const std::string& velo_to_cam, int camera);
+
+/// calib_imu_to_velo.txt's R, T: velo_T_imu (x_velo = R x_imu + T).
+Eigen::Isometry3d readKittiImuToVelo(const std::string& imu_to_velo);
 }  // namespace vlo

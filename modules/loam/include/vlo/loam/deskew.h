@@ -8,10 +8,10 @@
 
 namespace vlo::loam
 {
-/// `motion` is the pose of this sweep's frame in the previous sweep's frame (one sweep apart);
-/// points at sweep time s (in sweeps; usually in [0, 1], any value allowed) are moved into the
-/// frame at sweep time `reference`, along the constant twist of `motion` (an arc in a turn).
-void deskew(ScanPoints& points, const Eigen::Isometry3d& motion, double reference);
+/// `motion` is the pose of this frame in the previous one, `dt` seconds earlier; points at time
+/// `time` (seconds from the frame's time, any sign) are moved into the frame at its time (0), along
+/// the constant twist of `motion` (an arc in a turn).
+void deskew(ScanPoints& points, const Eigen::Isometry3d& motion, double dt);
 
 /// motion^a on SE(3), approximated like A-LOAM: rotation angle and translation both scaled by a (the
 /// constant-velocity prior over a dropped frame).

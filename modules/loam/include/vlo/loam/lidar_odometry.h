@@ -39,7 +39,11 @@ struct LidarOdometryResult
 	Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< LiDAR in the first LiDAR frame
 	Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  ///< pose of this frame in the previous
 	Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();  ///< the prior's motion
-	std::string prior_source;  ///< constant_velocity | external | none
+	/// constant_velocity | external | none | cold_start (the first motion searched) |
+	/// constant_velocity (external fits the map worse)
+	std::string prior_source;
+	/// When an external guess was checked against the map: each guess's fit (ScanToMap::planeFit), else 0.
+	double guess_fit_external = 0, guess_fit_constant_velocity = 0;
 	/// Where an external guess entered: odometry (scan-to-scan) | mapping (scan-to-map) | "" (none)
 	std::string external_stage;
 
@@ -80,6 +84,9 @@ class LidarOdometry
    private:
 	LidarOdometryResult skip(LidarOdometryResult r, const std::string& why);
 	void registerFrame(const FeatureSet& f, LidarOdometryResult& r, Eigen::Isometry3d& odom, Eigen::Isometry3d& pose);
+	/// An external guess far from constant velocity: LOAM starts from constant velocity instead where
+	/// that fits the map better ([loam.prior] check_*).
+	void checkExternalGuess(const FeatureSet& f, const Eigen::Isometry3d& cv, LidarOdometryResult& r) const;
 	/// The map and the scan-to-scan reference hold only `first`, the first frame's features (deskewed).
 	void restartFromFirst(const FeatureSet& first);
 

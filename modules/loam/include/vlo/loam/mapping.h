@@ -58,12 +58,17 @@ class ScanToMap
 
 	/// One round's matches for `in` at pose T.
 	void findMatches(const Input& in, const Eigen::Isometry3d& T, bool with_edges, Matches& out) const;
+	/// How well the scan's plane points at pose T fit the map's planes: the sum of their weights
+	/// under the robust loss (1 for a point on its plane, less the farther it lies).
+	double planeFit(const Input& in, const Eigen::Isometry3d& T) const;
 
    private:
 	/// Appends the line matches of `in` at pose T to out.edges.
 	void findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
-	/// Information the plane matches give the translation at T along its weakest direction.
-	double planeTranslationInformation(const std::vector<PlaneMatch>& planes, const Eigen::Isometry3d& T) const;
+	/// Information on the translation along its weakest direction of these matches at T (robust-weighted
+	/// J^T J, rotation marginalised).
+	double translationInformation(const std::vector<EdgeMatch>& edges, const std::vector<PlaneMatch>& planes,
+		const Eigen::Isometry3d& T) const;
 	/// Correspondence + solve rounds from res.T_map_curr until converged; false (res.reason set)
 	/// when too few matches.
 	bool refine(const Input& in, Result& res) const;

@@ -23,6 +23,8 @@ class MotionPrior
 	/// The motion finally estimated for the frame at time t.
 	virtual void update(double t, const Eigen::Isometry3d& T_prev_curr) = 0;
 	virtual void reset() = 0;
+	/// When the last predict() took an external motion: the constant-velocity prediction it set aside.
+	virtual std::optional<Eigen::Isometry3d> setAside() const { return std::nullopt; }
 };
 
 /// Repeats the last estimated motion, scaled to the time since the previous frame.
@@ -53,7 +55,8 @@ class ExternalPrior : public MotionPrior
 	Eigen::Isometry3d predict(double t, const std::optional<Eigen::Isometry3d>& external) override;
 	std::string lastSource() const override { return source_; }
 	void update(double t, const Eigen::Isometry3d& T_prev_curr) override { fallback_.update(t, T_prev_curr); }
-	void reset() override { fallback_.reset(), last_external_.reset(); }
+	void reset() override { fallback_.reset(), last_external_.reset(), set_aside_.reset(); }
+	std::optional<Eigen::Isometry3d> setAside() const override { return set_aside_; }
 
 	/// Finite, a proper rotation, and within the configured translation/rotation bounds.
 	bool plausible(const Eigen::Isometry3d& T) const;
@@ -65,6 +68,7 @@ class ExternalPrior : public MotionPrior
 	ConstantVelocityPrior fallback_;
 	std::string source_ = "none";
 	std::optional<Eigen::Isometry3d> last_external_;  ///< the previous frame's external motion, if any
+	std::optional<Eigen::Isometry3d> set_aside_;  ///< the constant-velocity prediction, when external won
 };
 
 /// The prior named by o.source.

@@ -10,7 +10,7 @@
 
 namespace vlo::loam
 {
-/// Scan preprocessing: ring assignment, timing within the sweep, range gating, deskew.
+/// Scan preprocessing: ring assignment, range gating, deskew passes.
 struct ScanOptions : public OptionSet
 {
 	std::string ring_model = "uniform";  ///< uniform | hdl64 | table
@@ -20,13 +20,8 @@ struct ScanOptions : public OptionSet
 	double fov_margin_deg = 0.5;  ///< accepted beyond the lowest/highest beam
 	double min_range = 3.0;  ///< closer returns (vehicle body, noise) are dropped [m]
 	double max_range = 150.0;  ///< farther returns are dropped [m]
-	double scan_period = 0.1;  ///< seconds per sweep
-	bool clockwise = true;  ///< rotation seen from above (Velodyne: clockwise)
-	bool time_from_first_point = true;  ///< sweep starts at the first point's azimuth
-	double sweep_start_azimuth_deg = 180.0;  ///< used when time_from_first_point is false
-	bool deskew = false;  ///< undistort features with the initial-guess motion (sweep times from the azimuth)
-	bool point_times = true;  ///< a scan with the sensor's per-point times is deskewed with them, to the frame's time
-	double deskew_reference = 1.0;  ///< fraction of the sweep the scan's pose refers to
+	/// A scan with point times ([lidar] point_times) is deskewed to the frame's time, and registered
+	/// again while the motion found still changes
 	int max_deskew_passes = 3;  ///< deskew + register again while the motion found still changes
 	/// ... by more than this [m] (a rolling sweep's drift needs it settled to millimetres: doc/RESULTS.md)
 	double deskew_tolerance = 0.002;
@@ -89,6 +84,10 @@ struct OdometryOptions : public OptionSet
 	/// Rounds go on past solver.outer_iterations while a round still moves the pose (a guess far
 	/// from the motion: a cold start at speed, a gap), up to this many in all.
 	int max_rounds = 30;
+	/// The first motion of a drive (no velocity known yet) is searched from translations up to this
+	/// far along the LiDAR's x and y axes (a start at speed: doc/LOAM.md), 0: from the zero motion only [m] ...
+	double cold_start_range = 3.0;
+	double cold_start_step = 0.75;  ///< ... this far apart [m]
 
    protected:
 	void declare(OptionTable& t) override;
@@ -109,8 +108,9 @@ struct MappingOptions : public OptionSet
 	std::string edges = "auto";
 	/// The planes leave the translation weak when its information along the weakest direction
 	/// (robust-weighted J^T J of the plane matches, rotation marginalised, as [loam.prior]) is below
-	/// this: edges = auto seeks lines where it is at the guess, and no round goes past
-	/// solver.outer_iterations where it is at the pose reached.
+	/// this: edges = auto seeks lines where it is at the guess; and no round goes past
+	/// solver.outer_iterations where the matches in use (planes, and lines when sought) leave it so
+	/// weak at the pose reached.
 	double weak_plane_information = 30;
 	/// Rounds go on past solver.outer_iterations while a round still moves the pose and the planes
 	/// fix the translation (a guess centimetres off that skipped scan-to-scan), up to this many in
@@ -168,6 +168,13 @@ struct PriorOptions : public OptionSet
 	/// ... or below this fraction of the next smallest: one direction distinctly weaker than the
 	/// others, as along a corridor.
 	double min_weakest_ratio = 0.5;
+	/// An accepted external motion this far from the constant-velocity prediction (or turning by
+	/// check_deviation_deg) is checked against the map: where the constant-velocity guess fits the map
+	/// better by check_margin (a fraction of the external one's fit), LOAM starts from it instead, so
+	/// that the visual guess never leaves LOAM worse off than its own prediction (0: no check) [m] ...
+	double check_deviation = 0.05;
+	double check_deviation_deg = 0.3;  ///< ... [deg]
+	double check_margin = 0.05;  ///< ... by this fraction
 
    protected:
 	void declare(OptionTable& t) override;

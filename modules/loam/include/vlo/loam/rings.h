@@ -61,9 +61,8 @@ inline float fastAtan2(float y, float x)
 
 /// Drops invalid, too close/far and out-of-view returns, assigns rings and sweep times, and
 /// groups the points by ring in time order. A scan with ring ids keeps them (no elevation table:
-/// any beam layout works) and has max(the model's rings, highest id + 1) rings; a scan with times
-/// (and point_times) gets time = deskew_reference + time / scan_period. Never throws on bad data (the counts say what was
-/// dropped); an empty or all-invalid scan gives a RingScan without points.
+/// any beam layout works) and has max(the model's rings, highest id + 1) rings. Never throws on bad
+/// data (the counts say what was dropped); an empty or all-invalid scan gives a RingScan without points.
 class ScanPreprocessor
 {
    public:

@@ -9,8 +9,8 @@
 namespace vlo::loam
 {
 /// A preprocessed LiDAR return: position in the LiDAR frame, beam (ring) index counted from the
-/// lowest beam, and time within the sweep in sweeps: a fraction in [0, 1) from the azimuth, or
-/// deskew_reference + the sensor's time / scan_period (any value) from per-point times.
+/// lowest beam, and its time in seconds from the frame's time: the scan's own (RingScan::
+/// times_from_data), or else one from the azimuth that only orders the ring.
 struct ScanPoint
 {
 	Eigen::Vector3f p = Eigen::Vector3f::Zero();

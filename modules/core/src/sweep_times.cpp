@@ -1,0 +1,21 @@
+#include <vlo/core/sweep_times.h>
+
+#include <cmath>
+
+namespace vlo
+{
+double SpinningSweep::timeAt(double azimuth) const
+{
+	// Fraction of the turn since the seam, which lies frame_fraction of a turn before frame_azimuth.
+	const double turned = (clockwise ? frame_azimuth - azimuth : azimuth - frame_azimuth) / (2 * M_PI) + frame_fraction;
+	const double s = turned - std::floor(turned);
+	return (s - frame_fraction) * period;
+}
+
+void setTimesFromAzimuth(PointCloud& scan, const SpinningSweep& sweep)
+{
+	for (LidarPoint& p : scan) p.time = static_cast<float>(sweep.timeAt(std::atan2(double(p.y), double(p.x))));
+	scan.has_time = true;
+	scan.time_from_azimuth = true;
+}
+}  // namespace vlo

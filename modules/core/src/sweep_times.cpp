@@ -1,5 +1,6 @@
 #include <vlo/core/sweep_times.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace vlo
@@ -17,5 +18,11 @@ void setTimesFromAzimuth(PointCloud& scan, const SpinningSweep& sweep)
 	for (LidarPoint& p : scan) p.time = static_cast<float>(sweep.timeAt(std::atan2(double(p.y), double(p.x))));
 	scan.has_time = true;
 	scan.time_from_azimuth = true;
+}
+
+bool hasTimeSpread(const PointCloud& scan)
+{
+	return scan.has_time &&
+		std::any_of(scan.begin(), scan.end(), [&](const LidarPoint& p) { return p.time != scan.front().time; });
 }
 }  // namespace vlo

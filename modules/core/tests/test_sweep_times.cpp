@@ -53,3 +53,18 @@ TEST(SweepTimes, SetTimesMarksTheScanTimedFromTheAzimuth)
 	EXPECT_NEAR(scan[1].time, 0.0f, 1e-7);
 }
 }  // namespace vlo::test
+
+namespace vlo::test
+{
+TEST(SweepTimes, OnlyTimesThatDifferLeaveSomethingToDeskew)
+{
+	PointCloud scan;
+	scan.push_back(LidarPoint{1.0f, 0.0f, 0.0f});
+	scan.push_back(LidarPoint{0.0f, 1.0f, 0.0f});
+	EXPECT_FALSE(hasTimeSpread(scan));  // no times
+	scan.has_time = true;
+	EXPECT_FALSE(hasTimeSpread(scan));  // every time 0: motion-compensated
+	scan[1].time = 0.01f;
+	EXPECT_TRUE(hasTimeSpread(scan));
+}
+}  // namespace vlo::test

@@ -1,5 +1,6 @@
 #include <vlo/icp/deskew.h>
 #include <vlo/core/se3_twist.h>
+#include <vlo/core/sweep_times.h>
 
 
 namespace vlo::icp
@@ -13,7 +14,7 @@ Points deskew(const PointCloud& scan, const Eigen::Isometry3d& motion, double dt
 {
 	Points out;
 	out.reserve(scan.size());
-	const bool moving = scan.has_time && dt > 0 && !motion.isApprox(Eigen::Isometry3d::Identity());
+	const bool moving = dt > 0 && !motion.isApprox(Eigen::Isometry3d::Identity()) && hasTimeSpread(scan);
 	const Vector6d xi = logTwist(motion);
 	for (const auto& p : scan)
 	{

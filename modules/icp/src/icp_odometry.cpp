@@ -1,5 +1,6 @@
 #include <vlo/core/se3.h>
 #include <vlo/core/stopwatch.h>
+#include <vlo/core/sweep_times.h>
 #include <vlo/icp/icp_odometry.h>
 #include <vlo/icp/preprocessing.h>
 
@@ -50,7 +51,7 @@ IcpResult IcpOdometry::process(double t, const PointCloud& scan, const std::opti
 	auto clock = SteadyClock::now();
 	const Eigen::Isometry3d motion = started_ ? predict(guess, r) : Eigen::Isometry3d::Identity();
 	const Eigen::Isometry3d predicted = pose_ * motion;
-	r.deskewed = started_ && scan.has_time;
+	r.deskewed = started_ && hasTimeSpread(scan);
 	// KISS-ICP keeps the scan at half the voxel size for the map and registers a coarser subset.
 	const Points frame = voxelDownsample(
 		cropRange(deskew(scan, motion, t - last_t_), opt_.min_range, opt_.max_range), 0.5 * opt_.voxel_size);

@@ -79,7 +79,9 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 {
 	RingScan out;
 	out.rings_from_data = scan.has_ring;
-	out.times_from_data = scan.has_time;
+	// A scan whose points all share one time (motion-compensated, or an exact sensor: every time 0)
+	// has nothing to deskew: its rings are ordered by azimuth as without times.
+	out.times_from_data = hasTimeSpread(scan);
 	const int n_rings = out.rings_from_data ? ringsInData(scan, model_.numRings()) : model_.numRings();
 	out.n_input = scan.size();
 	out.ring_begin.assign(n_rings + 1, 0);

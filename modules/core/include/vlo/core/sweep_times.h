@@ -22,4 +22,8 @@ struct SpinningSweep
 
 /// Gives every point its time from its azimuth and marks the scan timed (has_time, time_from_azimuth).
 void setTimesFromAzimuth(PointCloud& scan, const SpinningSweep& sweep);
+
+/// The scan has times and they differ: something to deskew. A motion-compensated scan, or an exact
+/// sensor's, has every time 0.
+bool hasTimeSpread(const PointCloud& scan);
 }  // namespace vlo

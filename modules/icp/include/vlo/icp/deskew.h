@@ -14,6 +14,6 @@ namespace vlo::icp
 /// The fraction `s` of a constant-velocity (constant twist) motion; s may be negative or above 1.
 Eigen::Isometry3d scaleMotion(const Eigen::Isometry3d& motion, double s);
 
-/// The scan's points in the sensor frame at the frame's time (as they are without times).
+/// The scan's points in the sensor frame at the frame's time (as they are when its times do not differ).
 Points deskew(const PointCloud& scan, const Eigen::Isometry3d& motion, double dt);
 }  // namespace vlo::icp

@@ -29,7 +29,7 @@ struct RingScan
 	std::size_t n_out_of_range = 0;  ///< closer than min_range or farther than max_range
 	std::size_t n_out_of_fov = 0;  ///< elevation outside every beam, or a ring id beyond kMaxRings
 	bool rings_from_data = false;  ///< rings are the sensor's ids, not from the elevation table
-	bool times_from_data = false;  ///< times are the sensor's, not from the azimuth
+	bool times_from_data = false;  ///< times are the scan's (and not all the same), not from the azimuth
 
 	int numRings() const { return ring_begin.empty() ? 0 : static_cast<int>(ring_begin.size()) - 1; }
 	std::size_t ringSize(int r) const { return ring_begin[r + 1] - ring_begin[r]; }

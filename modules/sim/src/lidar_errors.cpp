@@ -1,4 +1,3 @@
-#include <vlo/sim/config.h>
 #include <vlo/sim/lidar_errors.h>
 #include <vlo/sim/rng.h>
 
@@ -12,14 +11,6 @@ namespace
 constexpr double kDeg = M_PI / 180;
 constexpr double kMaxTanIncidence = 10;  // 84 deg: beyond, the footprint term stops growing
 }  // namespace
-
-SensorRealism realisticSensors(const LidarModel& lidar)
-{
-	SensorRealism r;
-	r.enabled = true;
-	if (lidar.name == "vlp16") r.lidar.base_sigma = 0.03, r.lidar.divergence_mrad = 3.0;
-	return r;
-}
 
 LidarErrors::LidarErrors(const LidarRealism& p, int lasers, uint64_t seed) : p_(p)
 {

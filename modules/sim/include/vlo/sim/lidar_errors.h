@@ -11,7 +11,6 @@
 namespace vlo::sim
 {
 class Rng;
-struct LidarModel;
 
 /// What a beam met, before the sensor's errors.
 struct Echo

@@ -24,7 +24,10 @@ int main(int argc, char** argv)
 				{"ideal-deskew", "", "with --lidar-distortion: each return moved to the LiDAR's pose at the frame's time (times 0): the best any deskew gives"},
 				{"camera-distortion", "K1,K2,P1,P2[,K3]", "render through a plumb_bob lens with these coefficients"},
 				{"fisheye", "", "with --camera-distortion K1,K2,K3,K4: an equidistant (fisheye) lens instead"},
-				{"no-noise", "", "no image noise, range noise or dropouts (for checks)"},
+				{"realism", "", "a real sensor's errors (default): per-laser calibration errors, range noise growing with range and incidence, mixed returns at depth edges, dropouts on dark and grazing surfaces, intensity noise; camera blur, exposure changes, shot noise; a rolling sweep written without per-point times (doc/SIMULATOR.md)"},
+				{"no-realism", "", "the exact sensor: nominal beams, 2 cm range noise, 0.5 % dropouts, 2 grey levels of image noise, an ideal (de-skewed) sweep unless --lidar-distortion"},
+				{"point-times", "", "with the realism: write each point's time and ring (a rolling sweep as a driver with times gives it)"},
+				{"no-noise", "", "the exact sensor without image noise, range noise or dropouts (for checks; implies --no-realism)"},
 				{"foliage-depth", "M", "mean depth of LiDAR returns inside tree crowns and bushes (default 0: solid hulls)"},
 				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
 				{"traffic", "N", "N vehicles driving the road both ways, overtaking and oncoming (default 0)"},
@@ -33,7 +36,8 @@ int main(int argc, char** argv)
 				{"image-format", "pnm|png", "pnm (PGM, default) or png: ~1.8x smaller images, read and written with more CPU (doc/SPEED.md)"}},
 			"vlo-sim --out FILE.rawlog [options]\n\n"
 			  "Renders a seeded procedural drive headless: a grayscale camera (KITTI intrinsics) and a\n"
-			  "spinning LiDAR, 10 Hz, with ground truth in FILE.gt.tum (vehicle frame, relative to frame 0).");
+			  "spinning LiDAR, 10 Hz, with ground truth in FILE.gt.tum (vehicle frame, relative to frame 0).\n"
+			  "By default the sensors are realistic (--realism); --no-realism gives the exact sensor.");
 		vlo::sim::SimConfig cfg;
 		cfg.scenario = vlo::sim::parseScenario(cl.get("scenario", "urban"));
 		cfg.lidar = vlo::sim::lidarByName(cl.get("lidar", "hdl64"));
@@ -45,12 +49,23 @@ int main(int argc, char** argv)
 		cfg.kitti_poses = cl.get("trajectory");
 		cfg.lidar_distortion = cl.has("lidar-distortion");
 		cfg.lidar_ideal_deskew = cl.has("ideal-deskew");
-		if (cfg.lidar_ideal_deskew && !cfg.lidar_distortion) vlo::failInput("--ideal-deskew", "needs --lidar-distortion");
 		if (cl.has("fisheye") && !cl.has("camera-distortion")) vlo::failInput("--fisheye", "needs --camera-distortion K1,K2,K3,K4");
 		if (cl.has("camera-distortion"))
 			vlo::sim::setLens(cfg.rig.camera, cl.get("camera-distortion"), cl.has("fisheye"));
 		if (cfg.rig.camera.distorted() && cl.has("kitti-dir"))
 			vlo::failInput("--kitti-dir", "KITTI's images are rectified: not with --camera-distortion");
+		if (cl.has("realism") && (cl.has("no-realism") || cl.has("no-noise")))
+			vlo::failInput("--realism", std::string("contradicts ") + (cl.has("no-noise") ? "--no-noise" : "--no-realism"));
+		const bool realism = !cl.has("no-realism") && !cl.has("no-noise");
+		if (cl.has("point-times") && !realism)
+			vlo::failInput("--point-times", "needs the realism (the exact sensor's sweep has times with --lidar-distortion)");
+		if (realism)
+		{
+			cfg.realism = vlo::sim::realisticSensors(cfg.lidar);
+			cfg.lidar_distortion = true;  // a spinning LiDAR's sweep, moved by the vehicle while it turns
+			cfg.lidar_point_times = cl.has("point-times");
+		}
+		if (cfg.lidar_ideal_deskew && !cfg.lidar_distortion) vlo::failInput("--ideal-deskew", "needs --lidar-distortion");
 		if (cl.has("no-noise")) cfg.range_noise = cfg.image_noise = cfg.dropout = 0;
 		cfg.foliage_depth = cl.getDouble("foliage-depth", 0);
 		if (!(cfg.foliage_depth >= 0 && cfg.foliage_depth <= 10)) vlo::failInput("--foliage-depth", "must be between 0 and 10 m");
@@ -74,6 +89,7 @@ int main(int argc, char** argv)
 
 		std::string cmd = "vlo-sim";
 		for (int i = 1; i < argc; ++i) cmd += std::string(" ") + argv[i];
+		if (realism && !cl.has("realism")) cmd += " (--realism by default)";
 		const auto t0 = std::chrono::steady_clock::now();
 		vlo::sim::Simulator sim(cfg);
 		const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -14,7 +14,7 @@ bin=$1 out=$2 frames=${3:-5000} seed=${4:-7}
 ini="$(cd "$(dirname "$0")/.." && pwd)/ini/sim-hdl64.ini"
 mkdir -p "$out"
 drive=$out/drive_$frames.rawlog
-[[ -s $drive ]] || "$bin/vlo-sim" --lidar hdl64 --frames "$frames" --seed "$seed" --out "$drive" --quiet
+[[ -s $drive ]] || "$bin/vlo-sim" --no-realism --lidar hdl64 --frames "$frames" --seed "$seed" --out "$drive" --quiet
 /usr/bin/time -v -o "$out/run_$frames.time" "$bin/vlo-run" --rawlog "$drive" --ini "$ini" --out "$out/run_$frames" \
 	--overwrite --quiet ${LONG_DRIVE_ARGS:-} > "$out/run_$frames.log" &
 timer=$!

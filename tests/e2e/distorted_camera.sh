@@ -13,7 +13,7 @@ INI="${VLO_SRC:?}/ini"
 drive() {
 	local name=$1
 	shift
-	"$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames 80 --seed 4 --out "$name.rawlog" --quiet "$@" > /dev/null ||
+	"$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames 80 --seed 4 --no-realism --out "$name.rawlog" --quiet "$@" > /dev/null ||
 		{ fail "$name: vlo-sim failed"; return; }
 	"$BIN/vlo-run" --rawlog "$name.rawlog" --ini "$INI/sim-hdl64.ini" --out "out_$name" --quiet > /dev/null ||
 		{ fail "$name: vlo-run failed"; return; }

@@ -7,7 +7,7 @@ BIN="${VLO_BIN:?}"
 INI="${VLO_SRC:?}/ini"
 . "$VLO_SRC/tests/e2e/lib/common.sh"
 
-"$BIN/vlo-sim" --scenario urban --lidar vlp16 --frames 30 --seed 5 --out sim.rawlog --quiet || fail "vlo-sim failed"
+"$BIN/vlo-sim" --scenario urban --lidar vlp16 --frames 30 --seed 5 --no-realism --out sim.rawlog --quiet || fail "vlo-sim failed"
 "$BIN/vlo-test-rawlog-to-bag" --rawlog sim.rawlog --gt sim.gt.tum --out sim.bag || fail "bag writer failed"
 
 # --list: every topic with type, count and rate.

@@ -23,7 +23,7 @@ IDEAL_BOUND=1.3  # mean ratio deskewed by LOAM / deskewed ideally
 # the three drives of one seed, generated side by side
 for s in $SEEDS; do
 	for n in plain dist ideal; do
-		"$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames $FRAMES --seed "$s" --out "${n}_$s.rawlog" --quiet \
+		"$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames $FRAMES --seed "$s" --no-realism --out "${n}_$s.rawlog" --quiet \
 			$([ $n != plain ] && echo --lidar-distortion) $([ $n = ideal ] && echo --ideal-deskew) > /dev/null &
 	done
 	wait -n && wait -n && wait -n || fail "seed $s: vlo-sim failed"

@@ -21,7 +21,10 @@ expect_error "missing required option '--out'" --frames 2
 expect_error "frames" --frames 0 --out x.rawlog
 expect_error "nope.txt" --trajectory nope.txt --out x.rawlog
 expect_error "foliage-depth: must be between 0 and 10 m" --foliage-depth -1 --out x.rawlog
-expect_error "ideal-deskew: needs --lidar-distortion" --ideal-deskew --out x.rawlog
+expect_error "ideal-deskew: needs --lidar-distortion" --no-realism --ideal-deskew --out x.rawlog
+expect_error "realism: contradicts --no-realism" --realism --no-realism --out x.rawlog
+expect_error "realism: contradicts --no-noise" --realism --no-noise --out x.rawlog
+expect_error "point-times: needs the realism" --no-realism --point-times --out x.rawlog
 if ls x.* x_Images ./*.partial > /dev/null 2>&1; then fail "output left after an error"; fi
 
 # Same seed, same bytes: rawlog, images, ground truth.
@@ -43,6 +46,23 @@ head -1 a/t.gt.tum | grep -q "^0.000000000 0.000000000 0.000000000 0.000000000 0
 	fail "ground truth must start at the identity: $(head -1 a/t.gt.tum)"
 rawlog-edit --info -i a/t.rawlog > info.txt
 grep -Eq "CAMERA +/ +3 " info.txt && grep -Eq "LIDAR +/ +3 " info.txt || fail "rawlog-edit: $(cat info.txt)"
+
+# The realism is the default; --no-realism is the exact sensor (other scans, other images, same truth).
+# A realistic sweep is written without per-point times (a point cloud, as KITTI raw's), unless --point-times
+# (a Velodyne scan with times and rings).
+"$VLO_BIN/vlo-sim" --help | grep -q -- "--no-realism" || fail "--help lacks --no-realism"
+sim --scenario trees --lidar vlp16 --frames 3 --seed 5 --realism --out r/t.rawlog
+cmp a/t.rawlog r/t.rawlog || fail "--realism is not the default"
+sim --scenario trees --lidar vlp16 --frames 3 --seed 5 --no-realism --out e/t.rawlog
+cmp -s a/t.rawlog e/t.rawlog && fail "--no-realism gave the realistic scans"
+img=$(ls a/t_Images | head -1)
+cmp -s "a/t_Images/$img" "e/t_Images/$img" && fail "--no-realism gave the realistic image"
+cmp a/t.gt.tum e/t.gt.tum || fail "the realism changed the ground truth"
+sim --scenario trees --lidar vlp16 --frames 3 --seed 5 --point-times --out p/t.rawlog
+# (MRPT's binary rawlog names each object's class)
+grep -qa "CObservationPointCloud" a/t.rawlog && ! grep -qa "CObservationVelodyneScan" a/t.rawlog ||
+	fail "a realistic sweep must be a point cloud without times"
+grep -qa "CObservationVelodyneScan" p/t.rawlog || fail "--point-times: no Velodyne scan with times"
 
 # Variants: HDL-64 corridor with distortion; urban along the first KITTI 00 poses.
 sim --scenario corridor --frames 2 --lidar-distortion --out d/c.rawlog

@@ -65,7 +65,7 @@ std::vector<std::string> checkSimArgs(
 	// vlo-sim's options (apps/vlo-sim.cpp): true = takes a value. --out and --quiet are vlo-batch's.
 	static const std::map<std::string, bool> kOptions{{"scenario", true}, {"lidar", true}, {"frames", true},
 		{"seed", true}, {"trajectory", true}, {"lidar-distortion", false}, {"no-noise", false},
-		{"foliage-depth", true}, {"blackout", true}};
+		{"foliage-depth", true}, {"blackout", true}, {"realism", false}, {"no-realism", false}, {"point-times", false}};
 	const std::string at = r.where("sim");
 	for (std::size_t i = 0; i < args.size(); ++i)
 	{
@@ -74,7 +74,8 @@ std::vector<std::string> checkSimArgs(
 		const auto it = kOptions.find(a.substr(2));
 		if (it == kOptions.end())
 			failInput(at, "'" + a + "' is not allowed (vlo-sim options: --scenario --lidar --frames --seed " +
-					"--trajectory --lidar-distortion --no-noise --foliage-depth --blackout; vlo-batch sets --out and --quiet)");
+					"--trajectory --lidar-distortion --no-noise --foliage-depth --blackout --realism --no-realism --point-times; "
+					"vlo-batch sets --out and --quiet)");
 		if (!it->second) continue;
 		if (++i >= args.size()) failInput(at, "'" + a + "' needs a value");
 		if (a == "--trajectory")

@@ -52,7 +52,7 @@ gt_translation_only = true
 
 [sequence made]
 ini = base.ini
-sim = --scenario trees --lidar vlp16 --frames 30 --seed 13 --trajectory poses/00.txt
+sim = --scenario trees --lidar vlp16 --frames 30 --seed 13 --no-realism --trajectory poses/00.txt
 
 [config vo_mono]
 ; '=' inside a value is fine: MRPT splits at the first one
@@ -85,7 +85,7 @@ TEST_F(BatchPlan, ReadsSectionsInFileOrderWithPathsResolved)
 	EXPECT_TRUE(made.dataMissing());
 	EXPECT_EQ(made.gt, data + "/made.gt.tum");
 	const std::vector<std::string> sim{"--scenario", "trees", "--lidar", "vlp16", "--frames", "30", "--seed", "13",
-		"--trajectory", data + "/poses/00.txt"};
+		"--no-realism", "--trajectory", data + "/poses/00.txt"};
 	EXPECT_EQ(made.sim, sim);
 	ASSERT_EQ(p.configs.size(), 3u);
 	EXPECT_EQ(p.configs[0].name, "vo_mono");  // file order, not MRPT's alphabetical order

@@ -1,3 +1,4 @@
+#include <vlo/sim/camera_errors.h>
 #include <vlo/sim/camera_sim.h>
 #include <vlo/sim/lens.h>
 #include <vlo/sim/rng.h>
@@ -63,7 +64,7 @@ View CameraSim::view(const Eigen::Isometry3d& world_T_cam) const
 	return v;
 }
 
-mrpt::img::CImage CameraSim::image(const RenderedView& t, double sigma, Rng& rng) const
+mrpt::img::CImage CameraSim::image(const RenderedView& t, double sigma, Rng& rng, const CameraRealism* realism, double gain) const
 {
 	// 2x2 means of the supersampled tile (exact in float: sums of four bytes over 4).
 	const PinholeCamera& P = pinhole();
@@ -78,6 +79,7 @@ mrpt::img::CImage CameraSim::image(const RenderedView& t, double sigma, Rng& rng
 	{
 		picture = throughLens(picture, lens_->maps);
 	}
+	if (realism) applyCameraErrors(picture, *realism, gain, rng), sigma = 0;  // its noise replaces sigma's
 	mrpt::img::CImage img(K_.width, K_.height, mrpt::img::CH_GRAY);
 	for (int r = 0; r < K_.height; ++r)
 	{

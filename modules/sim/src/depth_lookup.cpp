@@ -4,6 +4,11 @@
 
 namespace vlo::sim
 {
+namespace
+{
+constexpr double kEdgeRelativeGap = 0.01;  // a depth 1 % off the hit's plane: another surface
+}  // namespace
+
 double DepthLookup::slope(int c, int r, int dc, int dr, double side) const
 {
 	const double w0 = invDepth(c, r), wm = invDepth(c - dc, r - dr), wp = invDepth(c + dc, r + dr);
@@ -54,7 +59,25 @@ bool DepthLookup::plane(double u, double v, Eigen::Vector3d& n) const
 	return true;
 }
 
-bool DepthLookup::intersect(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double& r, uint8_t& gray) const
+double DepthLookup::edgeDepthRatio(double u, double v, const Eigen::Vector3d& n, double radius_px) const
+{
+	// A pixel within the footprint is on another surface if its depth is off the hit's plane there.
+	const double w0 = n.dot(ray(u, v));
+	if (w0 <= 0) return 0;
+	double ratio = 0, largest = kEdgeRelativeGap;
+	const double around[4][2] = {{radius_px, 0}, {-radius_px, 0}, {0, radius_px}, {0, -radius_px}};
+	for (const auto& a : around)
+	{
+		const int c = static_cast<int>(std::lround(u + a[0])), r = static_cast<int>(std::lround(v + a[1]));
+		const double w = invDepth(c, r), planar = n.dot(ray(c, r));
+		if (w <= 0 || planar <= 0) continue;
+		const double off = std::abs(planar / w - 1);
+		if (off > largest) largest = off, ratio = w0 / w;
+	}
+	return ratio;
+}
+
+bool DepthLookup::intersect(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double& r, uint8_t& gray, Footprint* footprint) const
 {
 	if (d.z() <= 1e-6) return false;
 	// Start where the direction alone points (exact when o = 0), then follow the hit point.
@@ -76,6 +99,11 @@ bool DepthLookup::intersect(const Eigen::Vector3d& o, const Eigen::Vector3d& d, 
 		{
 			const int c = static_cast<int>(std::lround(u)), row = static_cast<int>(std::lround(v));
 			gray = t_.gray.empty() ? 0 : t_.gray[static_cast<std::size_t>(row) * t_.width + c];
+			if (footprint && footprint->radius_px > 0)
+			{
+				footprint->cos_incidence = std::abs(nd) / n.norm();
+				footprint->edge_depth_ratio = edgeDepthRatio(u, v, n, footprint->radius_px);
+			}
 			return true;
 		}
 	}

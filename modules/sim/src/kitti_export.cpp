@@ -63,8 +63,9 @@ void KittiExporter::write(const Frame& f)
 	if (f.has_image && !f.image.saveToFile(seq + "/image_0/" + name + ".png"))
 		failInput(seq + "/image_0/" + name + ".png", "cannot write image");
 	if (!f.has_scan) return;
-	PointCloud reflectance = f.scan;  // KITTI's reflectance is in [0, 1], the simulated scan's 8-bit
-	for (LidarPoint& p : reflectance) p.intensity /= 255.0f;
+	PointCloud reflectance = f.scan;  // KITTI's reflectance is in [0, 1], a timed scan's 8-bit
+	if (f.scan.has_time)
+		for (LidarPoint& p : reflectance) p.intensity /= 255.0f;
 	writeKittiBin(seq + "/velodyne/" + name + ".bin", reflectance);
 }
 

@@ -1,5 +1,6 @@
 #include "depth_lookup.h"
 
+#include <vlo/sim/lidar_errors.h>
 #include <vlo/sim/lidar_sim.h>
 #include <vlo/sim/rng.h>
 
@@ -60,6 +61,13 @@ LidarSim::LidarSim(const LidarModel& model, bool distortion, bool ideal_deskew)
 		ringOf_.push_back(static_cast<std::uint16_t>(std::count_if(el.begin(), el.end(), [e](double o) { return o < e; })));
 }
 
+Eigen::Vector3d LidarSim::firedDirection(const LidarErrors& e, int column, int laser) const
+{
+	const double el = model_.elevations_deg[static_cast<std::size_t>(laser)] * kDeg + e.elevationOffset(laser);
+	const double phi = azimuthOf(column) + e.azimuthOffset(laser);
+	return {std::cos(el) * std::cos(phi), std::cos(el) * std::sin(phi), std::sin(el)};
+}
+
 double LidarSim::azimuthOf(int column) const { return M_PI - (column + 0.5) * 2 * M_PI / model_.azimuth_steps; }
 
 double LidarSim::firingTime(double azimuth) const { return -wrap(azimuth) / (2 * M_PI) * model_.period; }
@@ -109,21 +117,39 @@ PointCloud LidarSim::sample(const std::vector<RenderedView>& tiles, const std::v
 		for (int j = 0; j < rings; ++j)
 		{
 			const Eigen::Vector3d& dL = dirs_[static_cast<std::size_t>(c) * rings + j];
+			// A real laser fires along its own (miscalibrated) direction; its point is computed along dL.
+			const Eigen::Vector3d dFired = noise.errors ? firedDirection(*noise.errors, c, j) : dL;
 			double r = 0;
 			uint8_t gray = 0;
-			bool hit = look.intersect(T.translation(), T.linear() * dL, r, gray) &&
-				foliage.penetrate(W * T.translation(), W.linear() * (T.linear() * dL), noise.foliage_depth, rng, r);
+			DepthLookup::Footprint fp;
+			fp.radius_px = noise.errors ? noise.errors->params().divergence_mrad * 1e-3 / 2 * K_.fx : 0;
+			bool hit = look.intersect(T.translation(), T.linear() * dFired, r, gray, &fp);
+			const double surface = r;
+			hit = hit && foliage.penetrate(W * T.translation(), W.linear() * (T.linear() * dFired), noise.foliage_depth, rng, r);
 			double rm = 0;
-			const int face = movers.empty() ? -1 : Traffic::raycast(movers, L.translation(), L.linear() * dL, hit ? r : model_.max_range + 1, rm);
+			const int face = movers.empty() ? -1 : Traffic::raycast(movers, L.translation(), L.linear() * dFired, hit ? r : model_.max_range + 1, rm);
 			if (face >= 0) r = rm, gray = moving->gray(face), hit = true;
 			if (!hit) continue;
-			const double noisy = r + noise.range_sigma * rng.normal();
-			if (rng.uniform() < noise.dropout || noisy < model_.min_range || noisy > model_.max_range) continue;
+			double measured = 0;
+			float reflectance = float(gray / 255.0);
+			if (noise.errors)
+			{
+				// Inside a crown or on a vehicle the rendered surface's incidence and edges do not apply.
+				const bool rendered = face < 0 && r == surface;
+				const Echo echo{r, rendered ? fp.cos_incidence : 1.0, rendered ? r * fp.edge_depth_ratio : 0.0, gray};
+				if (!noise.errors->measure(j, echo, rng, measured, reflectance)) continue;
+				if (measured < model_.min_range || measured > model_.max_range) continue;
+			}
+			else
+			{
+				measured = r + noise.range_sigma * rng.normal();
+				if (rng.uniform() < noise.dropout || measured < model_.min_range || measured > model_.max_range) continue;
+			}
 			if (face >= 0 && !moving->returns) continue;  // after the draws: the other returns keep their noise
-			const Eigen::Vector3d p = ideal_deskew_ ? Eigen::Vector3d(to_frame * (noisy * dL)) : Eigen::Vector3d(noisy * dL);
+			const Eigen::Vector3d p = ideal_deskew_ ? Eigen::Vector3d(to_frame * (measured * dL)) : Eigen::Vector3d(measured * dL);
 			// A scan with times is written as a Velodyne scan, whose intensity is the sensor's 8-bit
-			// reflectivity: the grey level itself (0-255).
-			const float intensity = float(gray);
+			// reflectivity (dropPointTimes scales it back to [0, 1] for a sweep written without times).
+			const float intensity = noise.errors ? 255 * reflectance : float(gray);
 			cloud.push_back({float(p.x()), float(p.y()), float(p.z()), intensity, ideal_deskew_ ? 0.0f : float(tau), ringOf_[j]});
 		}
 	}

@@ -1,7 +1,9 @@
 #include "traffic_mesh.h"
 
 #include <vlo/core/error.h>
+#include <vlo/sim/camera_errors.h>
 #include <vlo/sim/camera_sim.h>
+#include <vlo/sim/lidar_errors.h>
 #include <vlo/sim/lidar_sim.h>
 #include <vlo/sim/renderer.h>
 #include <vlo/sim/rng.h>
@@ -99,6 +101,7 @@ struct Simulator::Impl
 	mrpt::opengl::COpenGLScene scene;
 	std::unique_ptr<CameraSim> camera;
 	std::unique_ptr<LidarSim> lidar;
+	std::unique_ptr<LidarErrors> lidarErrors;  // the realistic unit's (null: the exact sensor)
 	std::unique_ptr<Renderer> renderer;
 	Traffic traffic;
 	std::unique_ptr<TrafficMesh> trafficMesh;  // the camera's view of the traffic (null without traffic)
@@ -128,6 +131,8 @@ Simulator::Simulator(const SimConfig& cfg) : impl_(std::make_unique<Impl>())
 
 	d.camera = std::make_unique<CameraSim>(cfg.rig.camera);
 	d.lidar = std::make_unique<LidarSim>(cfg.lidar, cfg.lidar_distortion, cfg.lidar_ideal_deskew);
+	if (cfg.realism.enabled)
+		d.lidarErrors = std::make_unique<LidarErrors>(cfg.realism.lidar, static_cast<int>(cfg.lidar.elevations_deg.size()), cfg.seed);
 	std::vector<std::pair<int, int>> tiles{d.camera->tileSize()};
 	for (int i = 0; i < d.lidar->viewCount(); ++i) tiles.push_back(d.lidar->tileSize());
 	d.renderer = std::make_unique<Renderer>(tiles);
@@ -181,14 +186,16 @@ Frame Simulator::frame(int k, RenderedView* camera_depth)
 	f.t = t;
 	f.rig = rig;
 	Rng imageNoise = Rng::stream(d.cfg.seed, "image noise", static_cast<uint64_t>(k));
-	f.image = d.camera->image(tiles[0], d.cfg.image_noise, imageNoise);
+	const CameraRealism* camera = d.cfg.realism.enabled ? &d.cfg.realism.camera : nullptr;
+	f.image = d.camera->image(tiles[0], d.cfg.image_noise, imageNoise, camera, camera ? exposureGain(*camera, d.cfg.seed, k) : 1.0);
 	if (k >= d.cfg.blackout_first && k < d.cfg.blackout_end) f.image.asCvMatRef().setTo(cv::Scalar::all(128));
 	f.has_image = true;
 	Rng lidarNoise = Rng::stream(d.cfg.seed, "lidar noise", static_cast<uint64_t>(k));
 	const std::vector<RenderedView> lt(std::make_move_iterator(tiles.begin() + 1), std::make_move_iterator(tiles.end()));
 	const std::vector<View> lv(views.begin() + 1, views.end());
-	f.scan = d.lidar->sample(lt, lv, lidarAt, d.world.foliage(), {d.cfg.range_noise, d.cfg.dropout, d.cfg.foliage_depth}, lidarNoise,
-		d.trafficMesh ? &moving : nullptr);
+	f.scan = d.lidar->sample(lt, lv, lidarAt, d.world.foliage(), {d.cfg.range_noise, d.cfg.dropout, d.cfg.foliage_depth, d.lidarErrors.get()},
+		lidarNoise, d.trafficMesh ? &moving : nullptr);
+	if (!d.cfg.lidar_point_times) dropPointTimes(f.scan);
 	f.has_scan = true;
 	if (camera_depth) *camera_depth = std::move(tiles[0]);
 	return f;

@@ -21,7 +21,7 @@ TEST(KittiRoundTrip, ImportedExportHoldsTheSameFrames)
 	fs::create_directories(dir);
 	const std::string bin = VLO_BIN_DIR, simRawlog = (dir / "sim.rawlog").string(),
 					  imported = (dir / "imported.rawlog").string(), kitti = (dir / "kitti").string();
-	const std::string simCmd = bin + "/vlo-sim --scenario urban --lidar vlp16 --frames 5 --seed 4 --lidar-distortion" +
+	const std::string simCmd = bin + "/vlo-sim --scenario urban --lidar vlp16 --frames 5 --seed 4 --no-realism --lidar-distortion" +
 		" --quiet --out '" + simRawlog + "' --kitti-dir '" + kitti + "'";
 	ASSERT_EQ(std::system(simCmd.c_str()), 0) << simCmd;
 	const std::string importCmd = bin + "/vlo-import kitti-odometry --root '" + kitti + "' --seq 00 --out '" +

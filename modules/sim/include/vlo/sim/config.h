@@ -1,6 +1,7 @@
 #pragma once
 // What to simulate: scenario, sensors and their placement, noise, length, seed.
 #include <vlo/core/frame.h>
+#include <vlo/sim/realism.h>
 
 #include <cstdint>
 #include <string>
@@ -53,6 +54,12 @@ struct SimConfig
 	/// With lidar_distortion: each return moved into the LiDAR frame at the frame's time exactly (time
 	/// written as 0): the rolling sweep's sampling without its distortion, what an ideal deskew gives.
 	bool lidar_ideal_deskew = false;
+	/// false: the sweep is written without per-point times and rings, as KITTI raw's and most recordings'
+	/// (a raw sweep: its motion distortion, if any, stays in the points with nothing to undo it by).
+	bool lidar_point_times = true;
+	/// A real sensor's errors (realism.h); off here (the exact sensor the unit tests need), on in vlo-sim
+	/// unless --no-realism. When on, they replace range_noise, dropout and image_noise.
+	SensorRealism realism;
 	double range_noise = 0.02;  ///< m, 1 sigma
 	double image_noise = 2.0;  ///< gray levels, 1 sigma
 	double dropout = 0.005;  ///< probability that a return is lost

@@ -20,12 +20,16 @@
 namespace vlo::sim
 {
 class Rng;
+class LidarErrors;
 
 struct LidarNoise
 {
 	double range_sigma = 0.02;  ///< m
 	double dropout = 0.005;  ///< probability of a lost return
 	double foliage_depth = 0;  ///< m, mean depth of a return inside a crown (0: the hull returns)
+	/// A realistic unit (lidar_errors.h): its lasers' calibration errors and echo model replace
+	/// range_sigma and dropout. Null: the exact sensor.
+	const LidarErrors* errors = nullptr;
 };
 
 /// Objects that move during the sweep (traffic): every firing sees them at its own time t + tau, also
@@ -72,5 +76,7 @@ class LidarSim
 	std::vector<int> viewOf_;  // per azimuth column
 	std::vector<std::uint16_t> ringOf_;  // per beam: its rank by elevation (0 = lowest)
 	double azimuthOf(int column) const;
+	/// Where laser `laser` really fires at `column`: its nominal direction turned by its calibration errors.
+	Eigen::Vector3d firedDirection(const LidarErrors& e, int column, int laser) const;
 };
 }  // namespace vlo::sim

@@ -30,6 +30,8 @@ class GzReadStream : public mrpt::io::CStream
 	bool truncated() const { return truncated_; }
 	/// True once a read got fewer bytes than asked: the data ended (for a plain file, where it may).
 	bool endReached() const { return end_reached_; }
+	/// zlib's message once a read stopped at damaged compressed data (a flipped byte); empty otherwise.
+	const std::string& dataError() const { return data_error_; }
 
    private:
 	std::string path_;
@@ -37,5 +39,6 @@ class GzReadStream : public mrpt::io::CStream
 	uint64_t file_size_ = 0;
 	bool truncated_ = false;
 	bool end_reached_ = false;
+	std::string data_error_;
 };
 }  // namespace vlo

@@ -66,6 +66,7 @@ bool ObservationStream::readObject()
 	}
 	catch (const mrpt::serialization::CExceptionEOF&)
 	{
+		if (!in_.dataError().empty()) failInput(path_, "corrupt gzip data in " + nth + " (" + in_.dataError() + ")");
 		// A clean end reads nothing; a cut-off file ends inside an object or before the gzip trailer.
 		if (in_.getPosition() != before) failInput(path_, "truncated: the file ends inside " + nth);
 		if (in_.truncated())
@@ -79,6 +80,7 @@ bool ObservationStream::readObject()
 	}
 	catch (const std::exception& e)
 	{
+		if (!in_.dataError().empty()) failInput(path_, "corrupt gzip data in " + nth + " (" + in_.dataError() + ")");
 		// A gzip file cut off, or a plain one ending inside the object.
 		if (in_.truncated() || (in_.endReached() && in_.getPosition() != before))
 			failInput(path_, "truncated: the file ends inside " + nth);

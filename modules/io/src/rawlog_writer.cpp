@@ -138,6 +138,11 @@ void RawlogWriter::writeFrame(const Frame& frame, const std::string& camera_labe
 	if (frame.has_scan) write(*toScanObservation(frame, lidar_label));
 }
 
+void RawlogWriter::noteCamera0(const Eigen::Isometry3d& vehicle_T_camera0, double t)
+{
+	write(*toCamera0Note(vehicle_T_camera0, t));
+}
+
 void RawlogWriter::commit()
 {
 	auto& d = *impl_;

@@ -54,7 +54,7 @@ TEST(RawlogErrors, NotARawlog)
 	expectInputError([&] { RawlogReader r(dir + "/text.rawlog"); }, {dir + "/text.rawlog", "not an MRPT rawlog"});
 	putBytes(dir + "/empty.rawlog", "");
 	expectInputError([&] { RawlogReader r(dir + "/empty.rawlog"); }, {"empty rawlog"});
-	expectInputError([&] { RawlogReader r(dir); }, {dir, "not a regular file"});
+	expectInputError([&] { RawlogReader r(dir); }, {dir, "is a directory, expected a file"});
 }
 
 TEST(RawlogErrors, TruncatedGzipAnywhereIsACleanError)
@@ -102,6 +102,33 @@ TEST(RawlogErrors, CorruptGzipData)
 	for (std::size_t i = bytes.size() / 2; i < bytes.size() / 2 + 200; ++i) bytes[i] = static_cast<char>(i * 7);
 	putBytes(dir + "/bad.rawlog", bytes);
 	expectInputError([&] { readFrames(dir + "/bad.rawlog"); }, {dir + "/bad.rawlog"});
+}
+
+// Issue 34, defect 4: one flipped byte in a gzip rawlog said "empty rawlog: no observations" (zlib stops at
+// the damage, which read as the end of the data).
+TEST(RawlogErrors, OneFlippedByteOfAGzipRawlogIsCorruptNotEmpty)
+{
+	const std::string dir = freshDir();
+	const std::string bytes = fileBytes(writeFrames(dir + "/full.rawlog", 6, false, 3000));
+	const std::string bad = dir + "/flipped.rawlog";
+	for (const std::size_t at : {std::size_t(10), std::size_t(11), std::size_t(16), std::size_t(64), bytes.size() / 2,
+			 bytes.size() - 6})
+	{
+		std::string flipped = bytes;
+		flipped[at] = static_cast<char>(flipped[at] ^ 0xFF);
+		putBytes(bad, flipped);
+		try
+		{
+			readFrames(bad);
+			ADD_FAILURE() << "byte " << at << ": no error";
+		}
+		catch (const InputError& e)
+		{
+			const std::string m = e.what();
+			EXPECT_NE(m.find(bad + ": corrupt"), std::string::npos) << "byte " << at << ": " << m;
+			EXPECT_EQ(m.find("empty"), std::string::npos) << "byte " << at << ": " << m;
+		}
+	}
 }
 
 TEST(RawlogErrors, UnknownSensorLabelListsTheLabelsSeen)

@@ -1,9 +1,9 @@
 #include <vlo/core/error.h>
+#include <vlo/core/input_file.h>
 #include <vlo/rosbag/camera_info.h>
 
 #include <mrpt/containers/yaml.h>
 
-#include <filesystem>
 
 namespace vlo::rosbag_io
 {
@@ -26,8 +26,7 @@ std::vector<double> matrixData(const mrpt::containers::yaml& doc, const char* ke
 
 sensor_msgs::CameraInfo readCameraInfoFile(const std::string& path)
 {
-	std::error_code ec;
-	if (!std::filesystem::is_regular_file(path, ec)) failInput(path, "cannot open (no such file)");
+	requireInputFile(path);
 	sensor_msgs::CameraInfo ci;
 	try
 	{

@@ -1,17 +1,16 @@
 #include <vlo/core/error.h>
+#include <vlo/core/input_file.h>
 #include <vlo/rosbag/extrinsics_file.h>
 
 #include <mrpt/containers/yaml.h>
 
 #include <cmath>
-#include <filesystem>
 
 namespace vlo::rosbag_io
 {
 Eigen::Isometry3d readExtrinsicsFile(const std::string& path)
 {
-	std::error_code ec;
-	if (!std::filesystem::is_regular_file(path, ec)) failInput(path, "cannot open (no such file)");
+	requireInputFile(path);
 	const std::string format = "expected 'lidar_T_camera: [16 numbers]' (row-major 4x4, camera optical frame in LiDAR frame)";
 	Eigen::Matrix4d M;
 	try

@@ -1,3 +1,5 @@
+#include "observation_stream.h"  // mrptMessage
+
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
 #include <vlo/io/frame_observations.h>
@@ -112,7 +114,8 @@ void RawlogWriter::write(const mrpt::obs::CObservation& obs)
 	}
 	catch (const std::exception& e)
 	{
-		failInput(impl_->path, std::string("write failed: ") + e.what());
+		// MRPT's message carries a 20-line backtrace: its own line only.
+		failInput(impl_->path, "write failed (disk full?): " + mrptMessage(e.what()));
 	}
 	++impl_->written;
 }

@@ -1,19 +1,23 @@
 #pragma once
-// The --out folder of vlo-run: a folder that holds another run is refused unless the user says
-// --overwrite; then that run's files, and only those, are removed before the new run writes. What a run
+// The --out folder of vlo-run: a folder that holds another run, or any other file, is refused unless the user
+// says --overwrite; then that run's files, and only those, are removed before the new run writes. What a run
 // wrote is listed in DIR/.vlo-run-files, so a later --overwrite never touches the user's own files.
 #include <set>
 #include <string>
 
 namespace vlo
 {
+/// Relative paths of the regular files where a run writes: in dir itself and under dir/snapshots. Nothing else
+/// is walked, so a folder such as / (with /proc) or /usr/share costs one listing and raises nothing.
+std::set<std::string> filesWhereRunsWrite(const std::string& dir);
+
 class RunFolder
 {
    public:
 	static constexpr const char* kManifest = ".vlo-run-files";
 
-	/// Throws InputError naming the folder and --overwrite when it holds another run and !overwrite.
-	/// Changes nothing on disk.
+	/// Throws InputError naming the folder and --overwrite when it holds another run, or other files, and
+	/// !overwrite. Changes nothing on disk.
 	RunFolder(std::string dir, bool overwrite);
 	/// Removes the previous run's files (the folder must exist) and notes what else is there.
 	void clearPreviousRun();

@@ -58,6 +58,15 @@ rc=$?
 	fail "cut rawlog: $(cat err.txt)"
 kept_run out/a/b
 
+# Issue 34, section 2: a full disk (here a 50 kB file size limit, its signal ignored) while the outputs are
+# written: one line, and no half of a run (frames.csv and trajectories without summary.json and the list).
+(
+	trap '' XFSZ
+	ulimit -f 50
+	refused "full disk" 2 "write failed (disk full?)" --rawlog many.rawlog --ini "$INI/vlp16.ini" --set pipeline.mode=lo \
+		--set pipeline.snapshots=false
+) || fail "full disk"
+
 # Ctrl-C in the middle of the frame loop
 rm -rf out
 "$BIN/vlo-run" --rawlog many.rawlog --ini "$INI/vlp16.ini" --out out/a/b --quiet > /dev/null 2> int.txt &

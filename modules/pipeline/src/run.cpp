@@ -163,18 +163,27 @@ RunSummary runPipeline(const RunRequest& req)
 	if (!outputs.cam0_T_vehicle && reader.vehicleTCamera0()) outputs.cam0_T_vehicle = reader.vehicleTCamera0()->inverse();
 	prepareOutputDir(req.out);
 	folder.clearPreviousRun();
-	RunSummary summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);
-	summary.frames = outputs.table.rows();
-	summary.seconds = loopSeconds;
-	summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;
-	summary.reader_stats = reader.statsSummary();
-	summary.stage_timings = stageTimings(outputs.table);
-	summary.complete = !stop;
-	summary.stop_reason = stopReason;
-	summary.last_frame = static_cast<long long>(outputs.table.numbers("frame").back());
-	writeSummaryJson(req.out + "/summary.json", summary, req);
-	writeRunReport(req.out, summary, req, outputs.table, popt.snapshots);
-	folder.recordWritten();
+	RunSummary summary;
+	try
+	{
+		summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);
+		summary.frames = outputs.table.rows();
+		summary.seconds = loopSeconds;
+		summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;
+		summary.reader_stats = reader.statsSummary();
+		summary.stage_timings = stageTimings(outputs.table);
+		summary.complete = !stop;
+		summary.stop_reason = stopReason;
+		summary.last_frame = static_cast<long long>(outputs.table.numbers("frame").back());
+		writeSummaryJson(req.out + "/summary.json", summary, req);
+		writeRunReport(req.out, summary, req, outputs.table, popt.snapshots);
+		folder.recordWritten();
+	}
+	catch (...)
+	{
+		folder.removeWritten();  // e.g. a full disk: no run without its summary and list of files
+		throw;
+	}
 	logger().logStr(mrpt::system::LVL_DEBUG, summary.reader_stats);
 	// With two threads the stages of consecutive frames overlap: each frame's ms_total then exceeds the wall
 	// time per frame, which is said beside it.

@@ -33,6 +33,14 @@ bool isVloRunFile(const std::string& name)
 	return trajectory || name == "summary.json" || name == "run.ini" || name == "frames.csv" || name == "map.pcd";
 }
 
+/// The folder as an absolute path without a trailing separator ("out/" and "out" alike).
+fs::path absoluteFolder(const std::string& dir)
+{
+	std::error_code ec;
+	fs::path p = fs::absolute(dir, ec).lexically_normal();
+	return p.has_filename() ? p : p.parent_path();
+}
+
 bool holdsAnything(const std::string& dir)
 {
 	std::error_code ec;
@@ -67,6 +75,9 @@ std::set<std::string> previousRunFiles(const fs::path& dir)
 
 RunFolder::RunFolder(std::string dir, bool overwrite) : dir_(std::move(dir))
 {
+	std::error_code ec;
+	for (fs::path p = absoluteFolder(dir_); !p.empty() && !fs::exists(p, ec) && p != p.parent_path(); p = p.parent_path())
+		first_made_ = p.string();
 	if (overwrite) return;
 	if (holdsRun(dir_))
 		failInput(dir_, "holds the files of another run: give --overwrite to replace them, or another --out folder");
@@ -98,6 +109,21 @@ void RunFolder::clearPreviousRun()
 		for (p = p.parent_path(); p != root && fs::is_empty(p, ec) && !ec; p = p.parent_path()) fs::remove(p, ec);
 	}
 	before_ = filesWhereRunsWrite(dir_);
+}
+
+void RunFolder::removeWritten() const
+{
+	std::error_code ec;
+	for (const auto& f : filesWhereRunsWrite(dir_))
+		if (!before_.count(f)) fs::remove(fs::path(dir_) / f, ec);
+	const fs::path snapshots = fs::path(dir_) / "snapshots";
+	if (fs::is_directory(snapshots, ec) && fs::is_empty(snapshots, ec)) fs::remove(snapshots, ec);
+	if (first_made_.empty()) return;
+	for (fs::path p = absoluteFolder(dir_); !p.empty() && fs::is_empty(p, ec) && !ec; p = p.parent_path())
+	{
+		fs::remove(p, ec);
+		if (p == first_made_) break;
+	}
 }
 
 void RunFolder::recordWritten() const

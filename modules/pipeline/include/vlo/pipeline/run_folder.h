@@ -23,6 +23,9 @@ class RunFolder
 	void clearPreviousRun();
 	/// Writes the manifest: every file in the folder that was not there at clearPreviousRun().
 	void recordWritten() const;
+	/// Removes every file this run wrote (those not there at clearPreviousRun()), and the folders it made:
+	/// a run that fails while writing (a full disk) leaves no half of itself.
+	void removeWritten() const;
 
 	/// True when `dir` holds a manifest or one of the files every vlo-run leaves (summary.json, run.ini,
 	/// frames.csv, trajectory_*.tum) from before manifests existed.
@@ -31,5 +34,6 @@ class RunFolder
    private:
 	std::string dir_;
 	std::set<std::string> before_;  ///< relative paths of the files that are not this run's
+	std::string first_made_;  ///< the highest folder of dir_ that clearPreviousRun() found missing, if any
 };
 }  // namespace vlo

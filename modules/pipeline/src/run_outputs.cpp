@@ -29,12 +29,13 @@ double maxStep(const Trajectory& t)
 }
 
 /// trajectory_<name>.tum, and with KITTI's camera 0 known trajectory_<name>.kitti.txt: the poses of camera 0
-/// in its frame at the first frame, as the KITTI devkit reads them.
+/// in its frame at the first frame, as the KITTI devkit reads them. The devkit pairs poses by line, so only a
+/// trajectory with a pose for each of the run's frames gets one (not a VO that started late or got lost).
 void writeTrajectory(const std::string& dir, const std::string& name, const Trajectory& traj,
-	const std::optional<Eigen::Isometry3d>& cam0_T_vehicle)
+	const std::optional<Eigen::Isometry3d>& cam0_T_vehicle, std::size_t frames)
 {
 	writeTum(dir + "/trajectory_" + name + ".tum", traj);
-	if (cam0_T_vehicle)
+	if (cam0_T_vehicle && traj.size() == frames)
 		writeKittiPoses(dir + "/trajectory_" + name + ".kitti.txt", vehicleToCamera(relativeToFirst(traj), *cam0_T_vehicle));
 }
 
@@ -124,8 +125,8 @@ RunSummary RunOutputs::write(
 	while (!motion.empty() && motion.back().t > last_t + 1e-9) motion.pop_back();
 	const Trajectory& finalTraj = plan.lidar_odometry ? lidar : motion;
 	s.final_trajectory = "trajectory_" + plan.name + ".tum";
-	if (!lidar.empty()) writeTrajectory(dir, plan.name, lidar, cam0_T_vehicle);
-	if (!motion.empty()) writeTrajectory(dir, "vo", motion, cam0_T_vehicle);
+	if (!lidar.empty()) writeTrajectory(dir, plan.name, lidar, cam0_T_vehicle, table.rows());
+	if (!motion.empty()) writeTrajectory(dir, "vo", motion, cam0_T_vehicle, table.rows());
 	s.path_length_m = pathLength(finalTraj);
 	s.max_step_m = maxStep(finalTraj);
 	if (motion_source) s.figures = motion_source->figures();

@@ -441,3 +441,22 @@ TEST_F(RunLoop, CtrlCKeepsAConsistentRunOfTheFramesComputed)
 			EXPECT_NE(files.find(f), std::string::npos) << f << " not in the run's list of files";
 	}
 }
+
+// Issue 34, section 1: with the rig's camera 0 known (here --kitti-calib), a trajectory with a pose for every
+// frame is also written as KITTI poses; the VO's, which starts at frame 1, is not (the devkit pairs by line).
+TEST_F(RunLoop, KittiPosesForTrajectoriesWithAPoseForEveryFrame)
+{
+	std::ofstream(dir_ + "/calib.txt") << "P0: 50 0 20 0 0 50 15 0 0 0 1 0\nTr: 0 -1 0 0 0 0 -1 0 1 0 0 0\n";
+	std::ofstream(dir_ + "/run.ini") << "[pipeline]\nvisual_odometry = fake_mono\nscale_correction = fake_scale\n"
+										"lidar_odometry = fake_lidar\nsnapshots = false\nmap_every = 0\n";
+	RunRequest req{dir_ + "/drive.rawlog", dir_ + "/run.ini", dir_ + "/out", {"pipeline.mode=vlo"}, ""};
+	req.kitti_calib = dir_ + "/calib.txt";
+	runPipeline(req);
+	const Trajectory kitti = readKittiPoses(out("trajectory_vlo.kitti.txt"));
+	ASSERT_EQ(kitti.size(), std::size_t(kFrames));
+	// The vehicle's 0.5 m per frame along its x is camera 0's z.
+	EXPECT_NEAR(kitti.back().pose.translation().z(), kStep * (kFrames - 1), 1e-9);
+	EXPECT_NEAR(kitti.back().pose.translation().norm(), kStep * (kFrames - 1), 1e-9);
+	EXPECT_TRUE(std::filesystem::exists(out("trajectory_vo.tum")));
+	EXPECT_FALSE(std::filesystem::exists(out("trajectory_vo.kitti.txt")));
+}

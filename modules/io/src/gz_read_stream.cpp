@@ -62,6 +62,8 @@ size_t GzReadStream::Read(void* buffer, size_t count)
 	return done;
 }
 
+bool GzReadStream::compressed() const { return gz_ && gzdirect(static_cast<gzFile>(gz_)) == 0; }
+
 size_t GzReadStream::Write(const void*, size_t) { throw std::logic_error("GzReadStream is read-only"); }
 
 uint64_t GzReadStream::Seek(int64_t, TSeekOrigin) { throw std::logic_error("GzReadStream cannot seek"); }

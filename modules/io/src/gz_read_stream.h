@@ -28,6 +28,8 @@ class GzReadStream : public mrpt::io::CStream
 	double progress() const;
 	/// True once a read found the file ending before the gzip trailer.
 	bool truncated() const { return truncated_; }
+	/// True for a gzip file (false for a plain one, which zlib reads as it is).
+	bool compressed() const;
 	/// True once a read got fewer bytes than asked: the data ended (for a plain file, where it may).
 	bool endReached() const { return end_reached_; }
 	/// zlib's message once a read stopped at damaged compressed data (a flipped byte); empty otherwise.

@@ -104,6 +104,24 @@ TEST(RawlogErrors, CorruptGzipData)
 	expectInputError([&] { readFrames(dir + "/bad.rawlog"); }, {dir + "/bad.rawlog"});
 }
 
+// Issue 34, defect 4: a corrupt string length (here the sensor label's, 6 -> 1 MB) made MRPT read past the end of
+// a complete gzip file, which was reported as "truncated".
+TEST(RawlogErrors, ACorruptLengthInACompleteGzipFileIsCorruptNotTruncated)
+{
+	const std::string dir = freshDir();
+	writeFrames(dir + "/full.rawlog", 4, false, 500);
+	const std::string plain = dir + "/plain.rawlog";
+	ASSERT_EQ(std::system(("gzip -dc '" + dir + "/full.rawlog' > '" + plain + "'").c_str()), 0);
+	std::string bytes = fileBytes(plain);
+	const auto label = bytes.rfind(std::string("\x06\0\0\0CAMERA", 10));
+	ASSERT_NE(label, std::string::npos);
+	bytes[label + 2] = '\x10';  // 6 + 1 MB
+	putBytes(plain, bytes);
+	ASSERT_EQ(std::system(("gzip -c '" + plain + "' > '" + dir + "/bad.rawlog'").c_str()), 0);
+	expectInputError([&] { readFrames(dir + "/bad.rawlog"); }, {dir + "/bad.rawlog: corrupt rawlog at object", "runs past the end"});
+	expectInputError([&] { readFrames(plain); }, {plain, "truncated"});  // a plain file cannot tell the two apart
+}
+
 // Issue 34, defect 4: one flipped byte in a gzip rawlog said "empty rawlog: no observations" (zlib stops at
 // the damage, which read as the end of the data).
 TEST(RawlogErrors, OneFlippedByteOfAGzipRawlogIsCorruptNotEmpty)

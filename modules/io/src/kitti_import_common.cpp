@@ -2,6 +2,7 @@
 
 #include <vlo/core/error.h>
 #include <vlo/core/progress.h>
+#include <vlo/core/stderr_capture.h>
 #include <vlo/io/kitti_files.h>
 #include <vlo/io/rawlog_writer.h>
 
@@ -53,7 +54,8 @@ void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig,
 			Frame f;
 			f.index = files.index;
 			f.t = files.t_image;
-			if (!f.image.loadFromFile(files.image, 0)) failInput(files.image, "cannot read image");
+			StderrCapture capture;  // libpng says why before the load fails
+			if (!f.image.loadFromFile(files.image, 0)) failInput(files.image, withReason("cannot read image", capture.taken()));
 			const int w = static_cast<int>(f.image.getWidth()), h = static_cast<int>(f.image.getHeight());
 			if (rig.camera.width == 0) rig.camera.width = w, rig.camera.height = h;
 			if (w != rig.camera.width || h != rig.camera.height)

@@ -2,6 +2,7 @@
 
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
+#include <vlo/core/stderr_capture.h>
 #include <vlo/io/frame_observations.h>
 #include <vlo/io/lidar_observations.h>
 #include <vlo/io/rawlog_writer.h>
@@ -132,8 +133,9 @@ void RawlogWriter::writeFrame(const Frame& frame, const std::string& camera_labe
 			char name[64];
 			std::snprintf(name, sizeof(name), "_%06zu.%s", frame.index, ext);
 			const std::string file = camera_label + name;
+			StderrCapture capture;  // libpng says why ("Write Error") before the save fails
 			if (!obs->image.saveToFile(d.images_partial + "/" + file))
-				failInput(d.images_partial + "/" + file, "cannot write image");
+				failInput(d.images_partial + "/" + file, withReason("cannot write image", capture.taken()));
 			obs->image.setExternalStorage(file);  // relative to <name>_Images
 		}
 		write(*obs);

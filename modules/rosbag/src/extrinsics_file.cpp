@@ -1,6 +1,6 @@
 #include <vlo/core/error.h>
-#include <vlo/core/input_file.h>
 #include <vlo/rosbag/extrinsics_file.h>
+#include <vlo/rosbag/yaml_file.h>
 
 #include <mrpt/containers/yaml.h>
 
@@ -10,12 +10,11 @@ namespace vlo::rosbag_io
 {
 Eigen::Isometry3d readExtrinsicsFile(const std::string& path)
 {
-	requireInputFile(path);
 	const std::string format = "expected 'lidar_T_camera: [16 numbers]' (row-major 4x4, camera optical frame in LiDAR frame)";
 	Eigen::Matrix4d M;
 	try
 	{
-		const auto doc = mrpt::containers::yaml::FromFile(path);
+		const auto doc = readYamlFile(path);
 		if (!doc.isMap() || !doc.has("lidar_T_camera")) failInput(path, "no key lidar_T_camera; " + format);
 		const auto& seq = doc["lidar_T_camera"];
 		if (!seq.isSequence() || seq.asSequence().size() != 16) failInput(path, "lidar_T_camera: " + format);

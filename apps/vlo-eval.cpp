@@ -9,6 +9,7 @@
 #include <vlo/io/trajectory.h>
 #include <vlo/viz/eval_plots.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <set>
@@ -47,11 +48,34 @@ std::vector<std::string> runNames(const std::vector<std::string>& files)
 	return clash ? files : names;
 }
 
+/// A TUM file as it is; KITTI poses (camera 0 in its frame at frame 0) moved onto the vehicle with the rig,
+/// timed by the KITTI times file or 0.1 s apart.
+Trajectory readInVehicleFrame(const std::string& path, const EvalOptions& opts, const std::vector<double>& kitti_times)
+{
+	if (trajectoryFormatOf(path) == TrajectoryFormat::Tum) return readTum(path);
+	if (!opts.cam0_T_vehicle)
+		failInput(path, "KITTI poses (12 numbers a line) are camera 0's: give --kitti-calib or --cam0-T-vehicle to "
+						"move them into the vehicle frame");
+	return cameraToVehicle(readKittiPoses(path, kitti_times), *opts.cam0_T_vehicle);
+}
+
+/// Why the devkit's plots are missing: the KITTI metric's own note, or too few segments of every length.
+std::string whyNoKittiPlots(const EvalReport& r)
+{
+	if (!r.kitti_note.empty()) return r.kitti_note;
+	std::ostringstream s;
+	s.precision(4);
+	s << "the devkit plots a segment length only with 3 segments of it, and the " << r.gt_length_m
+	  << " m of ground truth over the matched poses give fewer (see --kitti-lengths)";
+	return s.str();
+}
+
 int run(int argc, char** argv)
 {
 	const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 1,
-		{{"gt", "GT.tum", "ground truth (TUM, vehicle frame)", true},
-			{"est", "EST.tum", "estimated trajectory (TUM, vehicle frame); repeat to compare several", true, true},
+		{{"gt", "GT", "ground truth: TUM (vehicle frame) or KITTI poses (camera 0, needs the rig)", true},
+			{"est", "EST", "estimated trajectory, TUM or KITTI poses as --gt; repeat to compare several", true, true},
+			{"kitti-times", "times.txt", "times of KITTI poses' lines (default 0.1 s apart from 0)"},
 			{"metric", "kitti|ate|rpe|all", "metrics to compute (default all)"},
 			{"align", "se3|sim3|none", "alignment before ATE/ARE (default se3; sim3 for unscaled monocular)"},
 			{"json", "OUT.json", "also write the results as JSON"},
@@ -63,10 +87,10 @@ int run(int argc, char** argv)
 			{"kitti-step", "N", "KITTI first frames every N matched frames (default 10)"},
 			{"write-aligned", "OUT.tum", "write the aligned, matched estimate (TUM)"},
 			{"plots", "DIR", "write the KITTI devkit's error plots and the path coloured by ATE (PNG)"}},
-		"vlo-eval --gt GT.tum --est EST.tum [--est EST2.tum ..] [options]\n\n"
+		"vlo-eval --gt GT --est EST [--est EST2 ..] [options]\n\n"
 		"Scores an estimated trajectory against ground truth: the KITTI odometry metric and\n"
-		"ATE/ARE after Umeyama alignment, and the frame-to-frame relative pose error. See\n"
-		"doc/EVALUATION.md.");
+		"ATE/ARE after Umeyama alignment, and the frame-to-frame relative pose error. Files are\n"
+		"TUM (8 numbers a line) or KITTI poses (12). See doc/EVALUATION.md.");
 	EvalOptions opts;
 	opts.gt_name = cl.get("gt");
 	parseMetric(cl.get("metric", "all"), opts);
@@ -88,13 +112,14 @@ int run(int argc, char** argv)
 		for (const char* single : {"json", "write-aligned"})
 			if (cl.has(single)) failInput(std::string("--") + single, "needs a single --est");
 
-	const Trajectory gt = readTum(opts.gt_name);
+	const std::vector<double> kitti_times = cl.has("kitti-times") ? readKittiTimes(cl.get("kitti-times")) : std::vector<double>{};
+	const Trajectory gt = readInVehicleFrame(opts.gt_name, opts, kitti_times);
 	const std::vector<std::string> names = runNames(est_files);
 	std::vector<EvalRun> runs;
 	for (std::size_t i = 0; i < est_files.size(); ++i)
 	{
 		opts.est_name = est_files[i];
-		runs.push_back({names[i], evaluate(gt, readTum(est_files[i]), opts)});
+		runs.push_back({names[i], evaluate(gt, readInVehicleFrame(est_files[i], opts, kitti_times), opts)});
 	}
 	for (const auto& run : runs)
 	{
@@ -107,7 +132,9 @@ int run(int argc, char** argv)
 		const std::string dir = cl.get("plots");
 		const auto files = writeEvalPlots(dir, runs);
 		if (files.empty()) logger().logStr(mrpt::system::LVL_WARN, "--plots: nothing to plot (no KITTI segment, no ATE)");
-		for (const auto& f : files) std::cout << "plot: " << dir << "/" << f << "\n";
+		else if (std::none_of(files.begin(), files.end(), [](const std::string& f) { return f.rfind("kitti_", 0) == 0; }))
+			logger().logStr(mrpt::system::LVL_WARN, "--plots: no KITTI devkit plots: " + whyNoKittiPlots(runs.front().report));
+		for (const auto& f : files) std::cout << "vlo-eval: plot " << dir << "/" << f << "\n";
 	}
 	const EvalReport& report = runs.front().report;
 	if (cl.has("json")) writeJson(cl.get("json"), report);

@@ -1,12 +1,15 @@
 // vlo-import: converts datasets into vlo rawlogs (observation-only, CAMERA + LIDAR).
 #include <vlo/core/app_main.h>
 #include <vlo/core/app_cli.h>
+#include <vlo/core/build_info.h>
 #include <vlo/core/error.h>
 #include <vlo/core/log.h>
 #include <vlo/io/kitti_import.h>
+#include <vlo/io/rawlog_writer.h>
 #include <vlo/rosbag/rosbag_import.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -21,35 +24,40 @@ const char* kTopUsage =
 	"  kitti-odometry   KITTI odometry benchmark layout (sequences/NN, poses/NN.txt)\n"
 	"  kitti-raw        KITTI raw data layout (one drive, calibration of its date)\n"
 	"  rosbag           ROS 1 bags: PointCloud2 + Image/CompressedImage + CameraInfo (+ tf, ground truth)\n\n"
-	"Run 'vlo-import <subcommand> --help' for its options.\n";
+	"Run 'vlo-import <subcommand> --help' for its options; 'vlo-import --version' for the version.\n";
 
-/// A subcommand's options followed by those every subcommand has: the sensor labels in the rawlog.
-std::vector<vlo::CliOption> withLabelOptions(std::vector<vlo::CliOption> options)
+/// A subcommand's options followed by those every subcommand has: the sensor labels in the rawlog, --overwrite.
+std::vector<vlo::CliOption> withCommonOptions(std::vector<vlo::CliOption> options)
 {
 	options.push_back({"camera-label", "L", "sensor label of the images (default CAMERA)"});
 	options.push_back({"lidar-label", "L", "sensor label of the scans (default LIDAR)"});
+	options.push_back({"overwrite", "", "replace an earlier import's FILE.rawlog, FILE_Images/ and FILE.gt.tum"});
 	return options;
 }
 
+/// The labels, and the output checked: like vlo-run, no earlier result is replaced without --overwrite.
 template <class Import>
-void readLabels(const vlo::CommandLine& cl, Import& opt)
+void readCommon(const vlo::CommandLine& cl, Import& opt)
 {
 	opt.camera_label = cl.get("camera-label", opt.camera_label);
 	opt.lidar_label = cl.get("lidar-label", opt.lidar_label);
+	if (cl.has("overwrite")) return;
+	for (const std::string& p : {opt.out, vlo::rawlogImagesDir(opt.out), vlo::groundTruthPathFor(opt.out)})
+		if (std::filesystem::exists(p)) vlo::failInput(p, "exists: give --overwrite to replace it, or another --out");
 }
 
 void report(const vlo::ImportSummary& s)
 {
 	for (const auto& w : s.warnings) vlo::logger().logStr(mrpt::system::LVL_WARN, w);
-	std::printf("%s: %zu frames (%zu images, %zu scans) in %.1f s (%.1f frames/s)\n", s.rawlog.c_str(), s.frames,
+	std::printf("vlo-import: %s: %zu frames (%zu images, %zu scans) in %.1f s (%.1f frames/s)\n", s.rawlog.c_str(), s.frames,
 		s.images, s.scans, s.seconds, s.seconds > 0 ? s.frames / s.seconds : 0.0);
-	if (!s.ground_truth.empty()) std::printf("%s: ground truth, vehicle frame\n", s.ground_truth.c_str());
+	if (!s.ground_truth.empty()) std::printf("vlo-import: %s: ground truth, vehicle frame\n", s.ground_truth.c_str());
 }
 
 int kittiOdometry(int argc, char** argv)
 {
 	const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 2,
-		withLabelOptions({{"root", "DIR", "dataset root holding sequences/ and poses/", true},
+		withCommonOptions({{"root", "DIR", "dataset root holding sequences/ and poses/", true},
 			{"seq", "NN", "sequence number as in the folder name, e.g. 06", true},
 			{"out", "FILE.rawlog", "output rawlog; ground truth goes to FILE.gt.tum", true},
 			{"first", "I", "first frame (default 0)"}, {"last", "J", "last frame, inclusive (default: the last)"},
@@ -64,7 +72,7 @@ int kittiOdometry(int argc, char** argv)
 	opt.first = cl.getInt("first", 0);
 	opt.last = cl.getInt("last", -1);
 	opt.camera = static_cast<int>(cl.getInt("camera", 0));
-	readLabels(cl, opt);
+	readCommon(cl, opt);
 	report(vlo::importKittiOdometry(opt));
 	return 0;
 }
@@ -72,7 +80,7 @@ int kittiOdometry(int argc, char** argv)
 int kittiRaw(int argc, char** argv)
 {
 	const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 2,
-		withLabelOptions({{"drive", "DIR", "drive folder holding image_0X/data and velodyne_points/data", true},
+		withCommonOptions({{"drive", "DIR", "drive folder holding image_0X/data and velodyne_points/data", true},
 			{"calib", "DIR", "folder holding calib_cam_to_cam.txt and calib_velo_to_cam.txt", true},
 			{"out", "FILE.rawlog", "output rawlog", true},
 			{"camera", "X", "camera 0..3 (default 2; colour images are stored grayscale)"}}),
@@ -84,14 +92,14 @@ int kittiRaw(int argc, char** argv)
 	opt.calib = cl.get("calib");
 	opt.out = cl.get("out");
 	opt.camera = static_cast<int>(cl.getInt("camera", 2));
-	readLabels(cl, opt);
+	readCommon(cl, opt);
 	report(vlo::importKittiRaw(opt));
 	return 0;
 }
 int rosbag(int argc, char** argv)
 {
 	const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 2,
-		withLabelOptions({{"bag", "FILE.bag", "input bag (repeat for a recording split into several bags)", true, true},
+		withCommonOptions({{"bag", "FILE.bag", "input bag (repeat for a recording split into several bags)", true, true},
 			{"list", "", "print every topic with its type, message count and rate, and stop"},
 			{"lidar-topic", "TOPIC", "sensor_msgs/PointCloud2 topic"},
 			{"image-topic", "TOPIC", "sensor_msgs/Image or sensor_msgs/CompressedImage topic"},
@@ -104,7 +112,9 @@ int rosbag(int argc, char** argv)
 			{"out", "FILE.rawlog", "output rawlog"}}),
 		"Usage: vlo-import rosbag --bag FILE.bag [--bag MORE.bag ...] --list\n"
 		"       vlo-import rosbag --bag FILE.bag [--bag ...] --lidar-topic TOPIC --image-topic TOPIC\n"
-		"                         [--camera-info-topic TOPIC] [--extrinsics FILE.yaml] [--gt-topic TOPIC] --out FILE.rawlog\n"
+		"                         [--camera-info-topic TOPIC | --camera-info FILE.yaml] [--extrinsics FILE.yaml]\n"
+		"                         [--gt-topic TOPIC] [--vehicle-frame FRAME] [--reorder-window S]\n"
+		"                         [--camera-label L] [--lidar-label L] [--overwrite] --out FILE.rawlog\n"
 		"Messages are written in header-stamp order with their own stamps; see doc/ROSBAG.md.");
 	if (cl.has("list"))
 	{
@@ -124,14 +134,14 @@ int rosbag(int argc, char** argv)
 	opt.vehicle_frame = cl.get("vehicle-frame");
 	opt.reorder_window = cl.getDouble("reorder-window", opt.reorder_window);
 	opt.out = cl.get("out");
-	readLabels(cl, opt);
+	readCommon(cl, opt);
 	const auto s = vlo::importRosbag(opt);
 	for (const auto& w : s.warnings) vlo::logger().logStr(mrpt::system::LVL_WARN, w);
 	const double mb = s.bag_bytes / 1e6;
-	std::printf("%s: %zu images, %zu scans (%zu non-finite points dropped), extrinsics from %s; %.1f MB of bags in %.1f s (%.1f MB/s)\n",
+	std::printf("vlo-import: %s: %zu images, %zu scans (%zu non-finite points dropped), extrinsics from %s; %.1f MB of bags in %.1f s (%.1f MB/s)\n",
 		s.rawlog.c_str(), s.images, s.scans, s.dropped_points, s.extrinsics_source.c_str(), mb, s.seconds,
 		s.seconds > 0 ? mb / s.seconds : 0.0);
-	if (!s.ground_truth.empty()) std::printf("%s: %zu ground-truth poses, vehicle frame\n", s.ground_truth.c_str(), s.gt_poses);
+	if (!s.ground_truth.empty()) std::printf("vlo-import: %s: %zu ground-truth poses, vehicle frame\n", s.ground_truth.c_str(), s.gt_poses);
 	return 0;
 }
 }  // namespace
@@ -143,6 +153,11 @@ int main(int argc, char** argv)
 		if (sub == "--help" || sub == "-h")
 		{
 			std::cout << kTopUsage;
+			return 0;
+		}
+		if (sub == "--version")
+		{
+			std::cout << vlo::versionLine(kApp) << "\n";
 			return 0;
 		}
 		if (sub == "kitti-odometry") return kittiOdometry(argc, argv);

@@ -22,10 +22,14 @@ int main(int argc, char** argv)
 				{"out", "DIR", "output folder (created)", true, false},
 				{"set", "SEC.KEY=VAL", "override one option of the INI", false, true},
 				{"gt", "GT.tum", "ground truth, only drawn in the snapshots", false, false},
+				{"kitti-calib", "calib.txt", "KITTI calib.txt whose Tr places camera 0 (KITTI imports carry it): trajectories also as KITTI poses", false, false},
 				{"overwrite", "", "replace the run that DIR holds (only its files)", false, false}},
-			"usage: vlo-run --rawlog FILE --ini INI --out DIR [--set section.key=value ...] [--gt GT.tum] [--overwrite]\n\n"
-			"Writes trajectory_<mode>.tum, frames.csv, map.pcd, run.ini, summary.json and snapshots/ in DIR.");
-		vlo::RunRequest req{cl.get("rawlog"), cl.get("ini"), cl.get("out"), cl.getAll("set"), cl.get("gt"), cl.has("overwrite")};
+			"usage: vlo-run --rawlog FILE --ini INI --out DIR [--set section.key=value ...] [--gt GT.tum]\n"
+			"               [--kitti-calib calib.txt] [--overwrite]\n\n"
+			"Writes trajectory_<mode>.tum (and trajectory_<mode>.kitti.txt, KITTI's camera-0 poses, when the\n"
+			"rig's camera 0 is known), frames.csv, map.pcd, run.ini, summary.json, report.md and snapshots/ in DIR.");
+		vlo::RunRequest req{cl.get("rawlog"), cl.get("ini"), cl.get("out"), cl.getAll("set"), cl.get("gt"),
+			cl.get("kitti-calib"), cl.has("overwrite")};
 		const auto s = vlo::runPipeline(req);
 		std::printf("vlo-run: %zu frames in %.1f s (%.1f ms/frame), path %.1f m, largest step %.2f m -> %s/%s\n", s.frames,
 			s.seconds, s.ms_per_frame, s.path_length_m, s.max_step_m, req.out.c_str(), s.final_trajectory.c_str());

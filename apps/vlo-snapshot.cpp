@@ -26,14 +26,30 @@ using namespace vlo;
 
 namespace
 {
-/// Runs f and prints "wrote PATH (N ms)".
+/// The PNGs written so far: a failure later (a --frame beyond the rawlog) removes them, and the folder if
+/// it made it, so that a failed call leaves nothing (issue 34, section 2).
+struct Written
+{
+	std::vector<std::string> files;
+	std::string made_dir;
+	void removeAll() const
+	{
+		std::error_code ec;
+		for (const auto& f : files) std::filesystem::remove(f, ec);
+		if (!made_dir.empty()) std::filesystem::remove(made_dir, ec);  // only when empty
+	}
+};
+Written written;
+
+/// Runs f and prints "vlo-snapshot: wrote PATH (N ms)".
 template <typename F>
 void timed(const std::string& path, F&& f)
 {
 	const auto t0 = std::chrono::steady_clock::now();
+	written.files.push_back(path);
 	f();
 	const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-	std::cout << "wrote " << path << " (" << long(ms) << " ms)" << std::endl;
+	std::cout << "vlo-snapshot: wrote " << path << " (" << long(ms) << " ms)" << std::endl;
 }
 
 std::set<long> frameIndices(const CommandLine& cl)
@@ -66,7 +82,9 @@ void projectedFrames(
 		}
 		if (!f.has_image || !f.has_scan)
 			failInput(rawlog, "frame " + std::to_string(k) + " lacks " + (f.has_image ? "a LiDAR scan" : "an image"));
-		const std::string png = out + "/frame_" + std::to_string(k) + ".png";
+		char name[32];
+		std::snprintf(name, sizeof(name), "/frame_%06ld.png", k);  // as vlo-run's snapshots
+		const std::string png = out + name;
 		ProjectedScanStyle style;
 		char t[48];
 		std::snprintf(t, sizeof t, "  (t = %.3f s)", f.t);
@@ -74,6 +92,10 @@ void projectedFrames(
 		timed(png, [&] { renderProjectedScan(f.image, f.scan, f.rig, png, {}, style); });
 	}
 }
+
+/// Every PNG asked for, into `out`.
+void draw(const CommandLine& cl, const std::vector<NamedTrajectory>& trajs, const Trajectory* gtp, const PointCloud& map,
+	const std::set<long>& frames, RawlogReader* reader, const std::string& out);
 
 int run(int argc, char** argv)
 {
@@ -89,7 +111,7 @@ int run(int argc, char** argv)
 		"vlo-snapshot --traj A.tum [--traj B.tum ...] [--name A ...] [--gt GT.tum]\n"
 		  "             [--map map.pcd] [--rawlog R.rawlog --frame K ...] --out DIR\n\n"
 		  "Writes DIR/topdown.png (trajectories, from above), DIR/map3d.png (map with\n"
-		  "trajectories, oblique) and DIR/frame_K.png (image with the LiDAR scan projected).\n"
+		  "trajectories, oblique) and DIR/frame_KKKKKK.png (image with the LiDAR scan projected).\n"
 		  "Headless: no display is needed. See doc/SNAPSHOTS.md.");
 	const auto trajFiles = cl.getAll("traj"), names = cl.getAll("name");
 	if (names.size() > trajFiles.size())
@@ -118,8 +140,24 @@ int run(int argc, char** argv)
 
 	const std::string out = cl.get("out");
 	std::error_code ec;
+	if (!std::filesystem::exists(out, ec)) written.made_dir = out;
 	std::filesystem::create_directories(out, ec);
 	if (ec || !std::filesystem::is_directory(out)) failInput(out, "cannot create the output folder");
+	try
+	{
+		draw(cl, trajs, gtp, map, frames, reader.get(), out);
+	}
+	catch (...)
+	{
+		written.removeAll();
+		throw;
+	}
+	return 0;
+}
+
+void draw(const CommandLine& cl, const std::vector<NamedTrajectory>& trajs, const Trajectory* gtp, const PointCloud& map,
+	const std::set<long>& frames, RawlogReader* reader, const std::string& out)
+{
 	if (!trajs.empty() || gtp)
 	{
 		TopDownStyle style;
@@ -133,7 +171,6 @@ int run(int argc, char** argv)
 		timed(out + "/map3d.png", [&] { renderMap3D(map, trajs, gtp, out + "/map3d.png", style); });
 	}
 	if (reader) projectedFrames(*reader, cl.get("rawlog"), frames, out);
-	return 0;
 }
 }  // namespace
 

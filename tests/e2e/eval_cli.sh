@@ -88,6 +88,15 @@ for f in kitti_translation_vs_length kitti_rotation_vs_length kitti_translation_
 	[ "$(head -c 4 "plots/$f.png" | tail -c 3)" = PNG ] || fail "plots: $f.png missing or not a PNG"
 done
 [ "$(ls plots | wc -l)" -eq 6 ] || fail "plots: expected 6 files, got $(ls plots)"
+grep -q "^vlo-eval: plot plots/ate_est2.png$" plots.txt || fail "plots: no 'vlo-eval: plot' line: $(cat plots.txt)"
+
+# 3c. Issue 34, defect 9: a drive too short for the devkit's plots gets the ATE view and a line saying why.
+make_tum 60 1 1 0 short_gt.tum
+make_tum 60 1 1.02 0 short_est.tum
+"$EVAL" --gt short_gt.tum --est short_est.tum --plots short_plots > /dev/null 2> short.err || fail "short plots: exit code"
+[ "$(ls short_plots)" = ate_short_est.png ] || fail "short plots: $(ls short_plots)"
+grep -q "^vlo-eval: warning: --plots: no KITTI devkit plots: no segment: the ground-truth path .* is 53.1 m" short.err ||
+	fail "short plots: no reason given: $(cat short.err)"
 
 # 4. Bad input.
 printf '0 0 0 0 0 0 0 1\n0.1 nan 0 0 0 0 0 1\n' > nan.tum

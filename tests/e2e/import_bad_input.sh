@@ -46,6 +46,25 @@ head -c 33 /dev/zero > broken/sequences/06/velodyne/000030.bin
 expect_error "000030.bin: size 33 bytes is not a multiple of 16" kitti-odometry --root broken --seq 06 --out out/x.rawlog
 rm -rf broken
 
+# Issue 34, defect 4: libpng printed its own line ("libpng error: IDA[AB]: invalid chunk type") before the
+# error line; now it is part of it.
+cp -r $ODO broken
+python3 -c "import sys; b = bytearray(open(sys.argv[1], 'rb').read()); b[40] ^= 0xFF; open(sys.argv[1], 'wb').write(b)" \
+	broken/sequences/06/image_0/000005.png
+expect_error "000005.png: cannot read image (libpng error: " kitti-odometry --root broken --seq 06 --out out/x.rawlog
+rm -rf broken
+
+# Issue 34, defect 4: a full disk (here a 2 MB file size limit, its signal ignored) in the middle of an import
+# printed MRPT's 20-line backtrace; one line, and nothing left behind.
+tar -xJf "$VLO_DATA/kitti_odometry_snippets.tar.xz" --wildcards 'kitti_odometry_snippets/sequences/00/*'
+(
+	trap '' XFSZ
+	ulimit -f 2000
+	expect_error "out/x.rawlog: write failed (disk full?): Cannot write bytes to stream" \
+		kitti-odometry --root kitti_odometry_snippets --seq 00 --camera 2 --out out/x.rawlog
+) || exit 1
+rm -rf kitti_odometry_snippets
+
 # kitti-raw without calibration files, and with a bad camera number.
 expect_error "calib_cam_to_cam.txt: cannot open" kitti-raw --drive . --calib . --out out/x.rawlog
 expect_error "--camera: must be 0, 1, 2 or 3" kitti-raw --drive . --calib . --out out/x.rawlog --camera 7

@@ -25,4 +25,15 @@ grep -Eq "CAMERA +/ +51 " odo.info || fail "rawlog-edit: $(cat odo.info)"
 rawlog-edit --info -i out/raw.rawlog > raw.info
 grep -Eq "CAMERA +/ +32 " raw.info && grep -Eq "LIDAR +/ +32 " raw.info || fail "rawlog-edit: $(cat raw.info)"
 ls out/*.partial 2> /dev/null && fail "partial output left"
+
+# Issue 34, defect 8: an earlier import is not replaced without --overwrite (as vlo-run's run folders).
+md5=$(md5sum < out/s06.rawlog)
+"$VLO_BIN/vlo-import" kitti-odometry --root kitti_odometry_06_0000-0050 --seq 06 --last 2 --out out/s06.rawlog 2> again.err &&
+	fail "an earlier import was replaced without --overwrite"
+grep -qx "vlo-import: error: out/s06.rawlog: exists: give --overwrite to replace it, or another --out" again.err ||
+	fail "re-import: $(cat again.err)"
+[ "$(md5sum < out/s06.rawlog)" = "$md5" ] || fail "the refused import changed the rawlog"
+"$VLO_BIN/vlo-import" kitti-odometry --root kitti_odometry_06_0000-0050 --seq 06 --last 2 --out out/s06.rawlog \
+	--overwrite --quiet > /dev/null || fail "--overwrite"
+[ "$(ls out/s06_Images | wc -l)" -eq 3 ] || fail "--overwrite: expected 3 images, got $(ls out/s06_Images | wc -l)"
 echo OK

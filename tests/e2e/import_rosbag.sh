@@ -61,6 +61,10 @@ expect_bad "distortion model" "fov.bag: /camera/camera_info: CameraInfo: unknown
 expect_bad "no extrinsics" "notf.bag: no transform between the LiDAR frame 'velodyne' and the camera frame 'camera_optical'" \
 	--bag notf.bag "${TOPICS[@]}"
 grep -qF -- "--extrinsics FILE.yaml" err.txt || fail "no extrinsics: the option is not named"
+# Issue 34, defect 4: the YAML parser printed its error and a caret on lines of their own before the error line.
+printf 'image_width: [1, 2\ncamera_matrix: {\n' > bad_info.yaml
+expect_bad "malformed YAML" "bad_info.yaml: not valid YAML (3:1: error: did not find expected node content)" \
+	--bag sim.bag "${TOPICS[@]}" --camera-info bad_info.yaml
 
 # Repeated --bag: one recording (notf.bag holds the same 30 frames again, without tf).
 "$BIN/vlo-import" rosbag --bag sim.bag --bag notf.bag --list > list2.txt || fail "--list of two bags failed"

@@ -34,6 +34,9 @@ refused "range error via --set" "--set vo.orb.n_features=10: must be >= 50" \
 	--ini "$INI/vlp16.ini" --set vo.orb.n_features=10
 refused "unknown choice via --set" "--set pipeline.mode=vlp: 'vlp' is not one of lo, vo, vlo (did you mean vlo?)" \
 	--ini "$INI/vlp16.ini" --set pipeline.mode=vlp
+# Issue 34, defect 4: a value that shares nothing with the allowed ones gets no "did you mean".
+refused "unknown choice, no near one" "--set pipeline.threads=7: '7' is not one of 1, 2, auto" \
+	--ini "$INI/vlp16.ini" --set pipeline.threads=7
 refused "unknown module via --set" "--set pipeline.lidar_odometry=kiss: unknown module 'kiss' (known: aloam, icp)" \
 	--ini "$INI/vlp16.ini" --set pipeline.lidar_odometry=kiss
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Re-using an --out folder: one that holds another run is refused (one line naming the folder and --overwrite,
-# exit 2, nothing changed); with --overwrite the earlier run's files go, and only those.
+# Re-using an --out folder: one that holds another run, or other files, is refused (one line naming the folder
+# and --overwrite, exit 2, nothing changed); with --overwrite the earlier run's files go, and only those.
 set -u
 BIN="${VLO_BIN:?}"
 INI="${VLO_SRC:?}/ini"
@@ -12,7 +12,18 @@ run() { "$BIN/vlo-run" --rawlog drive.rawlog --ini "$INI/sim-hdl64.ini" --quiet 
 mkdir -p out/snapshots
 echo mine > out/notes.txt
 echo mine > out/snapshots/mine.txt
-run --out out --set pipeline.sample_frame_every=4 || fail "a folder with only the user's files is refused"
+# Issue 34, defect 5: a folder with other files and no run (/usr/share, /) was taken, and / failed in a
+# "filesystem error" from walking /proc.
+for dir in out / /usr/share; do
+	run --out $dir 2> err.txt
+	rc=$?
+	[ $rc -eq 2 ] || fail "--out $dir, a folder of other files: exit $rc, expected 2"
+	[ "$(wc -l < err.txt)" -eq 1 ] &&
+		grep -qF "vlo-run: error: $dir: is a folder with other files and no run in it: give --overwrite" err.txt ||
+		fail "--out $dir: $(cat err.txt)"
+done
+[ "$(ls -A out | sort | tr '\n' ' ')" = "notes.txt snapshots " ] || fail "the refused run changed out/: $(ls -A out)"
+run --out out --overwrite --set pipeline.sample_frame_every=4 || fail "--overwrite: a folder with only the user's files"
 [ -s out/snapshots/frame_000004.png ] && [ -s out/.vlo-run-files ] || fail "first run: no snapshot or no manifest"
 grep -qx "trajectory_lo.tum" out/.vlo-run-files && grep -qx "snapshots/topdown.png" out/.vlo-run-files ||
 	fail "manifest lacks the run's files: $(cat out/.vlo-run-files)"

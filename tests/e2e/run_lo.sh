@@ -34,7 +34,8 @@ for v in "" --verbose --quiet; do
 	"$BIN/vlo-run" --rawlog hdl64.rawlog --ini "$INI/sim-hdl64.ini" --out out_v --set pipeline.mode=lo \
 		--set pipeline.max_frames=5 --set pipeline.snapshots=false $v > out.txt 2> err.txt || fail "vlo-run $v failed"
 	grep -q "^vlo-run: 5 frames in" out.txt || fail "vlo-run $v: no final line: $(cat out.txt)"
-	grep -q "^ms_lo_mapping .* 5$" err.txt && grep -q "^vlo-run: time per stage over 5 frames" err.txt
+	grep -q "^ms_lo_mapping .* 5$" err.txt && grep -q "^vlo-run: time per stage over 5 frames" err.txt &&
+		grep -q "^wall time per frame: [0-9.]* ms with [12] threads\? (ms_total: each frame's own time" err.txt
 	table=$?
 	grep -q "^vlo-run: debug: mode lo" err.txt
 	debug=$?

@@ -50,7 +50,7 @@ awk 'BEGIN { srand(1) } { x[NR] = $2; y[NR] = $3 } END {
 # 1. Top-down and 3D views.
 "$SNAP" --traj est.tum --name "estimate" --gt gt.tum --map map.pcd --title "e2e" --out out/a > run.txt || fail "exit code"
 cat run.txt
-grep -q "wrote out/a/topdown.png" run.txt || fail "no 'wrote' line for topdown.png"
+grep -q "^vlo-snapshot: wrote out/a/topdown.png" run.txt || fail "no 'wrote' line for topdown.png"
 expect_png out/a/topdown.png 1200 1000
 expect_png out/a/map3d.png 1600 1000
 ls out/a | grep -q partial && fail "partial file left in out/a"
@@ -90,8 +90,15 @@ if [ -x "$VLO_BIN/vlo-sim" ]; then
 	"$VLO_BIN/vlo-sim" --scenario urban --lidar vlp16 --frames 3 --seed 2 --out sim.rawlog --quiet || fail "vlo-sim"
 	"$SNAP" --rawlog sim.rawlog --frame 2 --traj sim.gt.tum --out out/c > run_c.txt || fail "rawlog: exit code"
 	cat run_c.txt
-	expect_png out/c/frame_2.png 1241 440   # 376 image rows + 64-row legend panel
+	expect_png out/c/frame_000002.png 1241 440   # 376 image rows + 64-row legend panel
 	expect_bad "frame beyond the end" "has only 3 frames" --rawlog sim.rawlog --frame 7
+	# Issue 34, section 2: topdown.png was written, then --frame 7 failed and left it behind.
+	expect_bad "frame beyond the end, after the top-down view" "has only 3 frames" --rawlog sim.rawlog --frame 7 \
+		--traj sim.gt.tum
+	[ ! -e bad ] || fail "the failed call left its folder"
+	mkdir -p mine && echo keep > mine/notes.txt
+	"$SNAP" --rawlog sim.rawlog --frame 7 --traj sim.gt.tum --out mine > /dev/null 2>&1 && fail "--frame 7 accepted"
+	[ "$(ls mine)" = notes.txt ] || fail "a failed call into a folder of the user's: $(ls mine)"
 else
 	skip "$VLO_BIN/vlo-sim not built, no rawlog frame checked"
 fi

@@ -4,6 +4,7 @@
 #include <vlo/batch/results.h>
 #include <vlo/batch/snapshots.h>
 #include <vlo/batch/tables.h>
+#include <vlo/batch/words.h>
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
 #include <vlo/core/interrupt.h>
@@ -186,7 +187,7 @@ void emitJobs(const BatchOptions& o)
 		logger().logStr(mrpt::system::LVL_WARN,
 			"not generated yet: " + names + "; emit them with --emit-data FILE and run those lines first");
 	}
-	std::printf("vlo-batch: then: %s/vlo-batch --collect %s\n", o.bin_dir.c_str(), out.c_str());
+	std::printf("vlo-batch: then: %s --collect %s\n", shellQuote(o.bin_dir + "/vlo-batch").c_str(), shellQuote(out).c_str());
 }
 
 int collect(const std::string& outArg)

@@ -1,9 +1,9 @@
-#include "ini_text.h"
 #include "plan_keys.h"
 
 #include <vlo/batch/plan.h>
 #include <vlo/batch/words.h>
 #include <vlo/core/error.h>
+#include <vlo/core/ini_text.h>
 #include <vlo/io/kitti_import.h>
 
 #include <filesystem>

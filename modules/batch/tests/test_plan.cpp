@@ -151,8 +151,8 @@ TEST_F(BatchPlan, BadPlansNameFileSectionAndKey)
 		{"line 5", "[config lo] set", "given twice"});
 	expectError(seq + cfg + "[sequence real]\nini = base.ini\n", {"line 5", "section [sequence real] given twice"});
 	expectError(seq + cfg + "[sequence  real]\nini = base.ini\n", {"sequence name 'real' is given twice"});
-	expectError(seq + cfg + "just words\n", {"line 5", "expected 'key = value'"});
-	expectError("set = x\n" + seq + cfg, {"line 1", "before the first [section]"});
+	expectError(seq + cfg + "just words\n", {"line 5", "is not 'key = value'"});
+	expectError("set = x\n" + seq + cfg, {"line 1", "comes before any [section]"});
 	expectError(cfg, {"no [sequence NAME] section"});
 	expectError(seq, {"no [config NAME] section"});
 	expectError("[sequence real]\n" + cfg, {"[sequence real] ini", "missing"});

@@ -4,6 +4,7 @@
 #include <vlo/core/interrupt.h>
 #include <vlo/core/log.h>
 
+#include <algorithm>
 #include <iostream>
 
 namespace vlo
@@ -28,7 +29,10 @@ int runApp(const std::string& app, const std::function<int()>& body)
 	}
 	catch (const InputError& e)
 	{
-		logger().logStr(mrpt::system::LVL_ERROR, e.what());
+		// One line, whatever a library put into the message.
+		std::string msg = e.what();
+		msg.resize(std::min(msg.size(), msg.find('\n')));
+		logger().logStr(mrpt::system::LVL_ERROR, msg);
 		return 2;
 	}
 	catch (const std::exception& e)

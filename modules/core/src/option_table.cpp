@@ -302,9 +302,10 @@ std::string didYouMean(const std::string& word, const std::vector<std::string>& 
 		const std::size_t d = editDistance(word, k);
 		if (d < bestDistance) best = k, bestDistance = d;
 	}
-	// A typo changes a few letters: at most a third of the word, at least 2.
+	// A typo changes a few letters: at most a third of the word, at least 2, and never half of it or more
+	// ("7" is no typo of "1").
 	const std::size_t limit = std::max<std::size_t>(2, word.size() / 3);
-	return bestDistance <= limit ? " (did you mean " + best + "?)" : "";
+	return bestDistance <= limit && 2 * bestDistance <= word.size() ? " (did you mean " + best + "?)" : "";
 }
 
 std::string notOneOf(const std::string& text, const std::vector<std::string>& allowed)

@@ -93,4 +93,7 @@ TEST(DidYouMean, SuggestsTheNearestNameOnlyForATypo)
 	EXPECT_EQ(didYouMean("kn", keys), " (did you mean knn?)");
 	EXPECT_EQ(didYouMean("completely_different", keys), "");
 	EXPECT_EQ(didYouMean("x", {}), "");
+	// Issue 34, defect 4: "--set pipeline.threads=7" was answered "did you mean 1?".
+	EXPECT_EQ(didYouMean("7", {"1", "2", "auto"}), "");
+	EXPECT_EQ(didYouMean("vlp", {"lo", "vo", "vlo"}), " (did you mean vlo?)");
 }

@@ -2,6 +2,8 @@
 #include <vlo/eval/ate.h>
 #include <vlo/eval/umeyama.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -14,6 +16,38 @@ namespace
 /// Each alignment with its name on the command line, in plans and in reports.
 const std::pair<Alignment, const char*> kAlignmentNames[] = {
 	{Alignment::None, "none"}, {Alignment::SE3, "se3"}, {Alignment::Sim3, "sim3"}};
+/// The alignment's rotation for the ARE. The positions fix its rotation about the path's main direction d only
+/// as far as they spread across d: a rotation by x about d moves them by x * sqrt(spread) RMS, so position
+/// errors of ate_rmse leave it uncertain by ate_rmse / sqrt(spread). On a nearly straight path (spread
+/// across d below a tenth of that along it) where this exceeds 1 deg (tens of degrees on KITTI's straight
+/// snippets), the rotation about d is the one that best aligns the orientations instead: Q(theta) about d
+/// maximising trace(Q N), N = sum R P_i G_i^T, in closed form. A curved path keeps the positions' fit,
+/// however poor the estimate.
+Eigen::Matrix3d rotationForAre(const Trajectory& gt, const Trajectory& est, const Eigen::Matrix3d& R, double ate_rmse,
+	AteResult& r)
+{
+	Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+	for (const auto& p : gt) mean += p.pose.translation();
+	mean /= double(gt.size());
+	Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+	for (const auto& p : gt) cov += (p.pose.translation() - mean) * (p.pose.translation() - mean).transpose();
+	cov /= double(gt.size());
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);  // eigenvalues increasing
+	const double spread = std::max(0.0, eig.eigenvalues()(0) + eig.eigenvalues()(1));
+	const double one_deg = M_PI / 180.0;
+	r.are_roll_uncertainty_deg = spread > 0 ? std::atan(ate_rmse / std::sqrt(spread)) / one_deg : 90.0;
+	const bool nearly_straight = spread < 0.01 * eig.eigenvalues()(2);  // 1/10 of the extent, squared
+	if (!nearly_straight || r.are_roll_uncertainty_deg <= 1.0) return R;
+
+	const Eigen::Vector3d d = eig.eigenvectors().col(2);
+	Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
+	for (std::size_t i = 0; i < gt.size(); ++i) N += R * est[i].pose.linear() * gt[i].pose.linear().transpose();
+	Eigen::Matrix3d K;
+	K << 0, -d.z(), d.y(), d.z(), 0, -d.x(), -d.y(), d.x(), 0;
+	const double theta = std::atan2((K * N).trace(), N.trace() - d.dot(N * d));
+	r.are_roll_from_orientations_deg = theta / one_deg;
+	return Eigen::AngleAxisd(theta, d).toRotationMatrix() * R;
+}
 }  // namespace
 
 Alignment parseAlignment(const std::string& s, const std::string& where)
@@ -54,21 +88,27 @@ AteResult computeAte(const Trajectory& gt, const Trajectory& est, Alignment alig
 	}
 
 	const std::vector<double> errors = ateErrors(gt, est, r.alignment);
-	double sq_t = 0, sq_r = 0, sum_t = 0;
-	for (std::size_t i = 0; i < est.size(); ++i)
+	double sq_t = 0, sum_t = 0;
+	for (const double e : errors)
 	{
-		const double e = errors[i];
 		sq_t += e * e;
 		sum_t += e;
 		r.ate_max_m = std::max(r.ate_max_m, e);
-		const Eigen::Matrix3d dR = gt[i].pose.linear().transpose() * r.alignment.R * est[i].pose.linear();
-		const double a = rotationAngle(dR);
-		sq_r += a * a;
 	}
 	const double n = static_cast<double>(est.size());
 	r.ate_rmse_m = std::sqrt(sq_t / n);
 	r.ate_mean_m = sum_t / n;
-	if (gt_has_rotation) r.are_rmse_deg = std::sqrt(sq_r / n) * 180.0 / M_PI;
+	if (!gt_has_rotation) return r;
+
+	// Unaligned, the estimate's rotation is as given: nothing to choose.
+	const Eigen::Matrix3d R = align == Alignment::None ? r.alignment.R : rotationForAre(gt, est, r.alignment.R, r.ate_rmse_m, r);
+	double sq_r = 0;
+	for (std::size_t i = 0; i < est.size(); ++i)
+	{
+		const double a = rotationAngle(gt[i].pose.linear().transpose() * R * est[i].pose.linear());
+		sq_r += a * a;
+	}
+	r.are_rmse_deg = std::sqrt(sq_r / n) * 180.0 / M_PI;
 	return r;
 }
 

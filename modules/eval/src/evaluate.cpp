@@ -128,6 +128,14 @@ std::vector<std::string> plausibilityWarnings(const EvalReport& r)
 		w.push_back(s.str());
 		s.str("");
 	}
+	if (r.ate && r.ate->are_roll_from_orientations_deg)
+	{
+		s << "the path is nearly straight: its positions leave the alignment's rotation about the direction of travel "
+		  << "uncertain by " << r.ate->are_roll_uncertainty_deg << " deg, so the ARE takes that rotation from the "
+		  << "orientations (" << *r.ate->are_roll_from_orientations_deg << " deg from the positions' fit; ATE keeps it)";
+		w.push_back(s.str());
+		s.str("");
+	}
 	const bool scaled = r.options.align == Alignment::Sim3;
 	if (!scaled && r.gt_length_m > 1 && (r.est_length_m > 2 * r.gt_length_m || 2 * r.est_length_m < r.gt_length_m))
 	{

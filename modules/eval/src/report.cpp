@@ -52,11 +52,11 @@ std::string toJson(const EvalReport& r)
 {
 	const auto& a = r.association;
 	const auto k = kittiNumbers(r);
-	std::optional<double> ate, ate_mean, ate_max, ate_pct, are, scale;
+	std::optional<double> ate, ate_mean, ate_max, ate_pct, are, are_roll, scale;
 	if (r.ate)
 	{
 		ate = r.ate->ate_rmse_m, ate_mean = r.ate->ate_mean_m, ate_max = r.ate->ate_max_m;
-		are = r.ate->are_rmse_deg, scale = r.ate->sim3_scale;
+		are = r.ate->are_rmse_deg, are_roll = r.ate->are_roll_from_orientations_deg, scale = r.ate->sim3_scale;
 		if (r.gt_length_m > 0) ate_pct = 100 * r.ate->ate_rmse_m / r.gt_length_m;
 	}
 	nlohmann::ordered_json perLength = nlohmann::ordered_json::array();
@@ -77,7 +77,7 @@ std::string toJson(const EvalReport& r)
 		{"gt_translation_only", r.options.gt_translation_only}, {"gt_length_m", num(r.gt_length_m)},
 		{"est_length_m", num(r.est_length_m)}, {"ate_rmse_m", num(ate)}, {"ate_mean_m", num(ate_mean)},
 		{"ate_max_m", num(ate_max)}, {"ate_pct_of_length", num(ate_pct)}, {"are_rmse_deg", num(are)},
-		{"sim3_scale", num(scale)}, {"ate_note", noteOrNull(r.ate_note)}, {"are_note", noteOrNull(r.are_note)},
+		{"are_roll_from_orientations_deg", num(are_roll)}, {"sim3_scale", num(scale)}, {"ate_note", noteOrNull(r.ate_note)}, {"are_note", noteOrNull(r.are_note)},
 		{"kitti_frame", r.kitti_frame}, {"kitti_t_err_pct", num(k.t_pct)}, {"kitti_r_err_deg_per_m", num(k.r_deg_m)},
 		{"kitti_r_err_deg_per_100m", num(k.r_deg_100m)},
 		{"kitti_segments", r.kitti ? nlohmann::ordered_json(r.kitti->segments.size()) : nlohmann::ordered_json()},
@@ -116,7 +116,9 @@ std::string formatTable(const EvalReport& r)
 	{
 		row("ATE RMSE " + al, fmt("%.4f m", r.ate->ate_rmse_m) +
 				(r.gt_length_m > 0 ? fmt("  (%.3f %% of length)", 100 * r.ate->ate_rmse_m / r.gt_length_m) : ""));
-		row("ARE RMSE " + al, r.ate->are_rmse_deg ? fmt("%.4f deg", *r.ate->are_rmse_deg) : "n/a: " + r.are_note);
+		const auto& roll = r.ate->are_roll_from_orientations_deg;
+		row("ARE RMSE " + al, r.ate->are_rmse_deg ? fmt("%.4f deg", *r.ate->are_rmse_deg) +
+					(roll ? "  (roll about the path from the orientations)" : "") : "n/a: " + r.are_note);
 		row("Sim(3) scale", r.ate->sim3_scale ? fmt("%.5f", *r.ate->sim3_scale) : "n/a: the estimate does not move");
 	}
 	else

@@ -112,3 +112,47 @@ TEST(Ate, ParsesAlignmentNames)
 	EXPECT_EQ(parseAlignment("none"), Alignment::None);
 	EXPECT_THROW(parseAlignment("SE3"), InputError);
 }
+
+namespace
+{
+/// Positions moved by a few centimetres in a fixed pseudo-random pattern, orientations kept.
+Trajectory jittered(Trajectory tr, double amplitude_m)
+{
+	for (std::size_t i = 0; i < tr.size(); ++i)
+		tr[i].pose.translation() += amplitude_m *
+			Eigen::Vector3d(std::sin(12.9898 * i), std::sin(78.233 * i + 1), std::sin(37.719 * i + 2));
+	return tr;
+}
+}  // namespace
+
+// Issue 34, defect 1: on a straight drive the positions cannot fix the alignment's rotation about the
+// direction of travel, and Umeyama picks it from the position noise: ARE of tens of degrees for an estimate
+// whose orientations are exact.
+TEST(Ate, StraightPathTakesTheRollAboutItsDirectionFromTheOrientations)
+{
+	const Trajectory gt = fromSteps(50, arcStep(1.0, 0));  // 49 m straight ahead
+	const Trajectory est = transformed(jittered(gt, 0.05), offset(1));
+	for (Alignment align : {Alignment::SE3, Alignment::Sim3})
+	{
+		const AteResult r = computeAte(gt, est, align);
+		ASSERT_TRUE(r.are_rmse_deg.has_value());
+		EXPECT_LT(*r.are_rmse_deg, 0.2) << toString(align);  // the orientations are exact
+		ASSERT_TRUE(r.are_roll_from_orientations_deg.has_value());
+		EXPECT_GT(r.are_roll_uncertainty_deg, 1.0);
+		EXPECT_LT(r.ate_rmse_m, 0.1);  // the positions' fit is kept for ATE
+	}
+	const AteResult none = computeAte(gt, jittered(gt, 0.05), Alignment::None);
+	EXPECT_NEAR(*none.are_rmse_deg, 0, 1e-9);
+	EXPECT_FALSE(none.are_roll_from_orientations_deg.has_value());
+}
+
+TEST(Ate, CurvedPathKeepsThePositionsRotationForAre)
+{
+	// 20 m of a 10 m radius turn climbing and falling 1 m: the positions fix every rotation.
+	const Trajectory gt = wiggly(200);
+	Trajectory est = transformed(jittered(gt, 0.01), offset(1));
+	for (auto& p : est) p.pose.linear() = p.pose.linear() * Rz(0.01);  // 0.573 deg off everywhere
+	const AteResult r = computeAte(gt, est, Alignment::SE3);
+	EXPECT_FALSE(r.are_roll_from_orientations_deg.has_value());
+	EXPECT_NEAR(*r.are_rmse_deg, 0.573, 0.1);
+}

@@ -1,8 +1,10 @@
 #include <vlo/core/error.h>
 #include <vlo/core/se3.h>
 #include <vlo/io/frame_observations.h>
+#include <vlo/io/kitti_calib.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace vlo
 {
@@ -57,6 +59,32 @@ CObservationImage::Ptr toImageObservation(const Frame& frame, const std::string&
 	obs->cameraParams = toTCamera(frame.rig.camera);
 	obs->image = frame.image;  // shallow: shares pixels
 	return obs;
+}
+
+namespace
+{
+const std::string kCamera0Key = "vehicle_T_camera0 (row-major 3x4):";
+}
+
+CObservationComment::Ptr toCamera0Note(const Eigen::Isometry3d& vehicle_T_camera0, double t)
+{
+	std::ostringstream text;
+	text.precision(17);
+	text << kCamera0Key;
+	for (int r = 0; r < 3; ++r)
+		for (int c = 0; c < 4; ++c) text << ' ' << vehicle_T_camera0.matrix()(r, c);
+	auto note = CObservationComment::Create();
+	note->timestamp = toTimestamp(t);
+	note->text = text.str();
+	return note;
+}
+
+bool isCamera0Note(const CObservationComment& comment) { return comment.text.rfind(kCamera0Key, 0) == 0; }
+
+Eigen::Isometry3d camera0FromNote(const CObservationComment& note, const std::string& where)
+{
+	if (!isCamera0Note(note)) failInput(where, "expected '" + kCamera0Key + " 12 numbers'");
+	return rigidFromText(note.text.substr(kCamera0Key.size()), where);
 }
 
 mrpt::img::CImage toGray(const mrpt::img::CImage& img)

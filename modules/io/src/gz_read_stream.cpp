@@ -16,6 +16,7 @@ GzReadStream::GzReadStream(const std::string& path) : path_(path)
 {
 	std::error_code ec;
 	if (!fs::exists(path, ec)) failInput(path, "file not found");
+	if (fs::is_directory(path, ec)) failInput(path, "is a directory, expected a file");
 	if (!fs::is_regular_file(path, ec)) failInput(path, "not a regular file");
 	file_size_ = fs::file_size(path, ec);
 	gz_ = gzopen(path.c_str(), "rb");
@@ -41,20 +42,27 @@ size_t GzReadStream::Read(void* buffer, size_t count)
 		{
 			int err = 0;
 			const char* msg = gzerror(gz, &err);
-			throw std::runtime_error(std::string("gzip data error: ") + (msg ? msg : "unknown"));
+			data_error_ = msg ? msg : "unknown";
+			throw std::runtime_error("gzip data error: " + data_error_);
 		}
 		done += static_cast<size_t>(n);
 		if (static_cast<unsigned>(n) < chunk)
 		{
 			int err = 0;
-			gzerror(gz, &err);
+			const char* msg = gzerror(gz, &err);
 			if (err == Z_BUF_ERROR) truncated_ = true;
+			// A damaged byte: zlib hands out what it inflated before it and stops with a data error, which
+			// must not pass for the end of the data ("empty rawlog").
+			else if (err != Z_OK && err != Z_STREAM_END)
+				data_error_ = msg ? msg : "unknown";
 			end_reached_ = true;
 			break;
 		}
 	}
 	return done;
 }
+
+bool GzReadStream::compressed() const { return gz_ && gzdirect(static_cast<gzFile>(gz_)) == 0; }
 
 size_t GzReadStream::Write(const void*, size_t) { throw std::logic_error("GzReadStream is read-only"); }
 

@@ -28,8 +28,12 @@ class GzReadStream : public mrpt::io::CStream
 	double progress() const;
 	/// True once a read found the file ending before the gzip trailer.
 	bool truncated() const { return truncated_; }
+	/// True for a gzip file (false for a plain one, which zlib reads as it is).
+	bool compressed() const;
 	/// True once a read got fewer bytes than asked: the data ended (for a plain file, where it may).
 	bool endReached() const { return end_reached_; }
+	/// zlib's message once a read stopped at damaged compressed data (a flipped byte); empty otherwise.
+	const std::string& dataError() const { return data_error_; }
 
    private:
 	std::string path_;
@@ -37,5 +41,6 @@ class GzReadStream : public mrpt::io::CStream
 	uint64_t file_size_ = 0;
 	bool truncated_ = false;
 	bool end_reached_ = false;
+	std::string data_error_;
 };
 }  // namespace vlo

@@ -1,4 +1,5 @@
 #include <vlo/core/error.h>
+#include <vlo/core/input_file.h>
 #include <vlo/core/se3.h>
 #include <vlo/io/kitti_calib.h>
 
@@ -11,8 +12,7 @@ namespace vlo
 {
 KittiCalibFile::KittiCalibFile(const std::string& path) : path_(path)
 {
-	std::ifstream in(path);
-	if (!in) failInput(path, "cannot open calibration file");
+	auto in = openInputFile(path);
 	std::string line;
 	for (std::size_t lineNo = 1; std::getline(in, line); ++lineNo)
 	{
@@ -96,6 +96,36 @@ Eigen::Isometry3d rigidFrom34(const Matrix34d& M)
 	return T;
 }
 
+Eigen::Isometry3d rigidFromRowMajor(const std::vector<double>& v, const std::string& where)
+{
+	if (v.size() != 12) failInput(where, "expected 12 numbers (row-major 3x4), found " + std::to_string(v.size()));
+	Matrix34d M;
+	for (int r = 0; r < 3; ++r)
+		for (int c = 0; c < 4; ++c) M(r, c) = v[4 * r + c];
+	// Calibration files print ~10 digits: accept that rounding, reject anything that is no rotation.
+	const Eigen::Matrix3d R = M.leftCols<3>();
+	if ((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-3 || R.determinant() < 0)
+		failInput(where, "the 3x3 part is not a rotation matrix");
+	return rigidFrom34(M);
+}
+
+Eigen::Isometry3d rigidFromText(const std::string& text, const std::string& where)
+{
+	std::string t = text;
+	for (char& c : t)
+		if (c == ',') c = ' ';
+	std::istringstream ss(t);
+	std::vector<double> v;
+	for (std::string tok; ss >> tok;)
+	{
+		char* end = nullptr;
+		const double d = std::strtod(tok.c_str(), &end);
+		if (*end != '\0' || !std::isfinite(d)) failInput(where, "'" + tok + "' is not a finite number");
+		v.push_back(d);
+	}
+	return rigidFromRowMajor(v, where);
+}
+
 Eigen::Isometry3d nominalCam0TVehicle()
 {
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -171,7 +201,8 @@ KittiRawCalib readKittiRawCalib(const std::string& cam_to_cam, const std::string
 	cam0_T_velo.col(3) = c.R_rect_00 * c.velo_to_cam.col(3);
 	Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
 	offset.translation() = offsetOf(c.P_rect);
-	c.camera_T_velo = offset * rigidFrom34(cam0_T_velo);
+	c.cam0_T_velo = rigidFrom34(cam0_T_velo);
+	c.camera_T_velo = offset * c.cam0_T_velo;
 	return c;
 }
 

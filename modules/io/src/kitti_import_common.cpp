@@ -2,6 +2,7 @@
 
 #include <vlo/core/error.h>
 #include <vlo/core/progress.h>
+#include <vlo/core/stderr_capture.h>
 #include <vlo/io/kitti_files.h>
 #include <vlo/io/rawlog_writer.h>
 
@@ -37,29 +38,35 @@ std::map<long, std::string> listNumberedFiles(const std::string& dir, const std:
 	return files;
 }
 
-void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig, const std::string& camera_label,
+void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig,
+	const Eigen::Isometry3d& vehicle_T_camera0, const std::string& camera_label,
 	const std::string& lidar_label, const std::string& progress_label, ImportSummary& summary)
 {
 	RawlogWriter writer(summary.rawlog);
+	if (!frames.empty()) writer.noteCamera0(vehicle_T_camera0, frames.front().t_image);
 	ProgressLine progress(progress_label, frames.size());
 	std::size_t scans_with_invalid = 0;
 	std::string first_invalid;
 	for (const auto& files : frames)
 	{
-		Frame f;
-		f.index = files.index;
-		f.t = files.t_image;
-		if (!f.image.loadFromFile(files.image, 0)) failInput(files.image, "cannot read image");
-		const int w = static_cast<int>(f.image.getWidth()), h = static_cast<int>(f.image.getHeight());
-		if (rig.camera.width == 0) rig.camera.width = w, rig.camera.height = h;
-		if (w != rig.camera.width || h != rig.camera.height)
-			failInput(files.image, "image is " + std::to_string(w) + "x" + std::to_string(h) + ", expected " +
-					std::to_string(rig.camera.width) + "x" + std::to_string(rig.camera.height) +
-					" (calibration or first image)");
-		f.has_image = true;
-		f.rig = rig;
-		writer.writeFrame(f, camera_label, lidar_label);
-		++summary.images;
+		if (!files.image.empty())
+		{
+			Frame f;
+			f.index = files.index;
+			f.t = files.t_image;
+			StderrCapture capture;  // libpng says why before the load fails
+			if (!f.image.loadFromFile(files.image, 0)) failInput(files.image, withReason("cannot read image", capture.taken()));
+			const int w = static_cast<int>(f.image.getWidth()), h = static_cast<int>(f.image.getHeight());
+			if (rig.camera.width == 0) rig.camera.width = w, rig.camera.height = h;
+			if (w != rig.camera.width || h != rig.camera.height)
+				failInput(files.image, "image is " + std::to_string(w) + "x" + std::to_string(h) + ", expected " +
+						std::to_string(rig.camera.width) + "x" + std::to_string(rig.camera.height) +
+						" (calibration or first image)");
+			f.has_image = true;
+			f.rig = rig;
+			writer.writeFrame(f, camera_label, lidar_label);
+			++summary.images;
+		}
 		if (!files.scan.empty())
 		{
 			Frame s;

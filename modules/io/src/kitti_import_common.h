@@ -15,7 +15,7 @@ namespace vlo
 /// or holds no such file.
 std::map<long, std::string> listNumberedFiles(const std::string& dir, const std::string& ext);
 
-/// The data of one KITTI frame. An empty `scan` means no LiDAR for that frame.
+/// The data of one KITTI frame. An empty `image` or `scan` means no image or LiDAR for that frame.
 struct KittiFrameFiles
 {
 	std::size_t index = 0;
@@ -28,10 +28,12 @@ struct KittiFrameFiles
 	std::optional<SpinningSweep> sweep;
 };
 
-/// Writes the frames (image, then scan, each at its own time) to summary.rawlog through a
-/// RawlogWriter, with a progress line. Scans with times are written as Velodyne scans, whose
-/// intensity is 8-bit: KITTI's reflectance in [0, 1] goes in as 0-255. A rig camera of size 0 takes the first image's size;
+/// Writes the note of KITTI's camera 0 (RawlogWriter::noteCamera0), then the frames (image, then scan, each at
+/// its own time) to summary.rawlog through a RawlogWriter, with a progress line. Scans with times are
+/// written as Velodyne scans, whose intensity is 8-bit: KITTI's reflectance in [0, 1] goes in as 0-255.
+/// A rig camera of size 0 takes the first image's size;
 /// every image must have the rig camera's size. Fills the counts of `summary`.
-void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig, const std::string& camera_label,
+void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig,
+	const Eigen::Isometry3d& vehicle_T_camera0, const std::string& camera_label,
 	const std::string& lidar_label, const std::string& progress_label, ImportSummary& summary);
 }  // namespace vlo

@@ -137,7 +137,7 @@ ImportSummary importKittiRaw(const KittiRawImport& opt)
 	rig.camera = calib.camera_intrinsics;
 	rig.vehicle_T_camera = calib.camera_T_velo.inverse();
 	rig.has_lidar = lidar;
-	writeKittiFrames(frames, rig, opt.camera_label, opt.lidar_label, "kitti-raw", summary);
+	writeKittiFrames(frames, rig, calib.cam0_T_velo.inverse(), opt.camera_label, opt.lidar_label, "kitti-raw", summary);
 	if (!gt.empty())
 	{
 		summary.ground_truth = groundTruthPathFor(opt.out);

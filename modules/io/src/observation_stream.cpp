@@ -53,6 +53,11 @@ CObservation::Ptr ObservationStream::next()
 	return obs;
 }
 
+void ObservationStream::failSizePastTheEnd(const std::string& nth) const
+{
+	failInput(path_, "corrupt rawlog at " + nth + ": a size in it runs past the end of the (complete) file");
+}
+
 bool ObservationStream::readObject()
 {
 	if (end_) return false;
@@ -66,7 +71,10 @@ bool ObservationStream::readObject()
 	}
 	catch (const mrpt::serialization::CExceptionEOF&)
 	{
-		// A clean end reads nothing; a cut-off file ends inside an object or before the gzip trailer.
+		if (!in_.dataError().empty()) failInput(path_, "corrupt gzip data in " + nth + " (" + in_.dataError() + ")");
+		// A clean end reads nothing; a cut-off file ends inside an object or before the gzip trailer. A
+		// complete gzip file (its trailer read) that ends inside an object has a size in it that is wrong.
+		if (in_.getPosition() != before && in_.compressed() && !in_.truncated()) failSizePastTheEnd(nth);
 		if (in_.getPosition() != before) failInput(path_, "truncated: the file ends inside " + nth);
 		if (in_.truncated())
 			failInput(path_, "truncated: the gzip stream is cut off after " + std::to_string(objects_) + " objects");
@@ -79,6 +87,8 @@ bool ObservationStream::readObject()
 	}
 	catch (const std::exception& e)
 	{
+		if (!in_.dataError().empty()) failInput(path_, "corrupt gzip data in " + nth + " (" + in_.dataError() + ")");
+		if (in_.endReached() && in_.getPosition() != before && in_.compressed() && !in_.truncated()) failSizePastTheEnd(nth);
 		// A gzip file cut off, or a plain one ending inside the object.
 		if (in_.truncated() || (in_.endReached() && in_.getPosition() != before))
 			failInput(path_, "truncated: the file ends inside " + nth);

@@ -25,6 +25,8 @@ class ObservationStream
    private:
 	/// Reads one top-level object into pending_; false at the end of the file.
 	bool readObject();
+	/// A complete gzip file that ends inside an object: a length in it is corrupt, not the file cut short.
+	[[noreturn]] void failSizePastTheEnd(const std::string& nth) const;
 
 	std::string path_;
 	GzReadStream in_;

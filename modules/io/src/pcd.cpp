@@ -1,5 +1,6 @@
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
+#include <vlo/core/input_file.h>
 #include <vlo/io/pcd.h>
 
 #include "pcd_header.h"
@@ -54,8 +55,7 @@ const pcl::PCLPointField* findField(const pcl::PCLPointCloud2& c, const std::str
 /// Checks the header strictly, and that a binary file holds all its points: PCL's reader trusts both.
 void checkBeforePcl(const std::string& path)
 {
-	std::ifstream in(path, std::ios::binary);
-	if (!in) failInput(path, "cannot open file");
+	auto in = openInputFile(path, std::ios::binary);
 	std::size_t lineNo = 0;
 	const PcdHeader h = readPcdHeader(in, path, lineNo);
 	if (!h.binary) return;

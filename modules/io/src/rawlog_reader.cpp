@@ -52,6 +52,7 @@ struct RawlogReader::Impl
 	bool eof = false;
 	int first_w = -1, first_h = -1;
 	SensorRig rig;  // latest known placement of each sensor
+	std::optional<Eigen::Isometry3d> vehicle_T_camera0;  // from the rawlog's note, if any
 
 	Impl(const std::string& p, RawlogReaderOptions o)
 		: path(p), images_dir(rawlogImagesDir(p)), opt(std::move(o)), in(p)
@@ -78,6 +79,11 @@ struct RawlogReader::Impl
 			return;
 		}
 		++stats.observations;
+		if (const auto note = std::dynamic_pointer_cast<CObservationComment>(obs); note && isCamera0Note(*note))
+		{
+			vehicle_T_camera0 = camera0FromNote(*note, path + ": the note of KITTI's camera 0");
+			return;  // no sensor's
+		}
 		++stats.labels[obs->sensorLabel];
 		const std::string cls = obs->GetRuntimeClass()->className;
 		if (obs->sensorLabel == opt.camera_label)
@@ -225,6 +231,8 @@ bool RawlogReader::next(Frame& frame)
 }
 
 const RawlogStats& RawlogReader::stats() const { return impl_->stats; }
+
+const std::optional<Eigen::Isometry3d>& RawlogReader::vehicleTCamera0() const { return impl_->vehicle_T_camera0; }
 
 double RawlogReader::progress() const { return impl_->in.progress(); }
 

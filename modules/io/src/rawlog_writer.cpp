@@ -1,5 +1,8 @@
+#include "observation_stream.h"  // mrptMessage
+
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
+#include <vlo/core/stderr_capture.h>
 #include <vlo/io/frame_observations.h>
 #include <vlo/io/lidar_observations.h>
 #include <vlo/io/rawlog_writer.h>
@@ -112,7 +115,8 @@ void RawlogWriter::write(const mrpt::obs::CObservation& obs)
 	}
 	catch (const std::exception& e)
 	{
-		failInput(impl_->path, std::string("write failed: ") + e.what());
+		// MRPT's message carries a 20-line backtrace: its own line only.
+		failInput(impl_->path, "write failed (disk full?): " + mrptMessage(e.what()));
 	}
 	++impl_->written;
 }
@@ -129,13 +133,19 @@ void RawlogWriter::writeFrame(const Frame& frame, const std::string& camera_labe
 			char name[64];
 			std::snprintf(name, sizeof(name), "_%06zu.%s", frame.index, ext);
 			const std::string file = camera_label + name;
+			StderrCapture capture;  // libpng says why ("Write Error") before the save fails
 			if (!obs->image.saveToFile(d.images_partial + "/" + file))
-				failInput(d.images_partial + "/" + file, "cannot write image");
+				failInput(d.images_partial + "/" + file, withReason("cannot write image", capture.taken()));
 			obs->image.setExternalStorage(file);  // relative to <name>_Images
 		}
 		write(*obs);
 	}
 	if (frame.has_scan) write(*toScanObservation(frame, lidar_label));
+}
+
+void RawlogWriter::noteCamera0(const Eigen::Isometry3d& vehicle_T_camera0, double t)
+{
+	write(*toCamera0Note(vehicle_T_camera0, t));
 }
 
 void RawlogWriter::commit()

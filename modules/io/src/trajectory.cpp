@@ -2,6 +2,7 @@
 
 #include <vlo/core/atomic_file.h>
 #include <vlo/core/error.h>
+#include <vlo/core/input_file.h>
 #include <vlo/core/se3.h>
 #include <vlo/io/trajectory.h>
 
@@ -13,13 +14,6 @@ namespace vlo
 {
 namespace
 {
-std::ifstream openOrFail(const std::string& path)
-{
-	std::ifstream in(path);
-	if (!in) failInput(path, "cannot open file");
-	return in;
-}
-
 /// Parses exactly n finite numbers from a line or throws naming file and line.
 std::vector<double> parseNumbers(const std::string& line, size_t n, const std::string& path, size_t lineNo)
 {
@@ -52,7 +46,7 @@ bool skippable(const std::string& line)
 template <class Use>
 void forEachRow(const std::string& path, size_t n, Use&& use)
 {
-	auto in = openOrFail(path);
+	auto in = openInputFile(path);
 	std::string line;
 	for (size_t lineNo = 1; std::getline(in, line); ++lineNo)
 		if (!skippable(line)) use(parseNumbers(line, n, path, lineNo), lineNo);
@@ -96,6 +90,24 @@ void writeTum(const std::string& path, const Trajectory& traj)
 		out << std::fixed << p.t << ' ' << t.x() << ' ' << t.y() << ' ' << t.z() << ' ' << q.x() << ' ' << q.y()
 			<< ' ' << q.z() << ' ' << q.w() << '\n';
 	});
+}
+
+TrajectoryFormat trajectoryFormatOf(const std::string& path)
+{
+	auto in = openInputFile(path);
+	std::string line;
+	for (size_t lineNo = 1; std::getline(in, line); ++lineNo)
+	{
+		if (skippable(line)) continue;
+		std::istringstream ss(line);
+		std::size_t n = 0;
+		for (std::string tok; ss >> tok;) ++n;
+		if (n == 8) return TrajectoryFormat::Tum;
+		if (n == 12) return TrajectoryFormat::Kitti;
+		failInput(path, "line " + std::to_string(lineNo) + ": " + std::to_string(n) +
+				" values, expected 8 (TUM: t x y z qx qy qz qw) or 12 (KITTI poses: row-major 3x4)");
+	}
+	failInput(path, "no pose (an empty file, or only comments)");
 }
 
 std::vector<double> readKittiTimes(const std::string& path)

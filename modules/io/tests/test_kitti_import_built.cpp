@@ -114,7 +114,10 @@ TEST(KittiOdometryBuilt, BadInputFailsNamingTheFileAndLeavesNoOutput)
 	fs::rename(seq + "/image_0", seq + "/image_x");
 	expectInputError([&] { importKittiOdometry(opt); }, {seq + "/image_0", "directory not found"});
 	expectNoOutput(root);
-	fs::rename(seq + "/image_x", seq + "/image_0");
+	// Issue 34, defect 8: colour-only data (image_2) got no hint about --camera.
+	fs::rename(seq + "/image_x", seq + "/image_2");
+	expectInputError([&] { importKittiOdometry(opt); }, {seq + "/image_0: directory not found (this sequence has image_2: give --camera 2)"});
+	fs::rename(seq + "/image_2", seq + "/image_0");
 
 	// NaN points are dropped with a warning naming the file, not an error.
 	const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -191,4 +194,36 @@ TEST(KittiRawBuilt, TimestampsOfEachSensorAreUsed)
 	expectInputError([&] { importKittiRaw(opt); }, {drive + "/image_01/data", "directory not found"});
 	opt.camera = 5;
 	expectInputError([&] { importKittiRaw(opt); }, {"--camera", "0, 1, 2 or 3"});
+}
+
+// Issue 34, defect 3: a frame whose image is missing was dropped without a word (a missing scan warned),
+// and --last beyond the data was clamped silently.
+TEST(KittiOdometryBuilt, AFrameWithoutItsImageIsSaidAndKeepsItsScan)
+{
+	const std::string root = freshDir();
+	const std::string seq = buildOdometry(root);
+	fs::remove(seq + "/image_0/000001.png");
+	auto opt = options(root);
+	opt.last = 7;
+	const auto summary = importKittiOdometry(opt);
+	EXPECT_EQ(summary.frames, 3u);
+	EXPECT_EQ(summary.images, 2u);
+	EXPECT_EQ(summary.scans, 3u);
+	ASSERT_EQ(summary.warnings.size(), 2u);
+	EXPECT_NE(summary.warnings[0].find("--last 7: " + seq + " ends at frame 2"), std::string::npos) << summary.warnings[0];
+	EXPECT_NE(summary.warnings[1].find(seq + "/image_0: no image for 1 frame (the first: frame 1)"), std::string::npos)
+		<< summary.warnings[1];
+
+	fs::remove(seq + "/velodyne/000001.bin");  // frame 1 now has nothing: skipped
+	fs::remove_all(root + "/out");
+	const auto again = importKittiOdometry(options(root));
+	EXPECT_EQ(again.frames, 2u);
+	EXPECT_EQ(again.images, 2u);
+	EXPECT_EQ(again.scans, 2u);
+	ASSERT_EQ(again.warnings.size(), 2u);
+	EXPECT_NE(again.warnings[0].find("no image for 1 frame (the first: frame 1); their scans are imported"),
+		std::string::npos)
+		<< again.warnings[0];
+	EXPECT_NE(again.warnings[1].find(seq + "/velodyne: no scan for 1 frame (the first: frame 1)"), std::string::npos)
+		<< again.warnings[1];
 }

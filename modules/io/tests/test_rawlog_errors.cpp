@@ -54,7 +54,7 @@ TEST(RawlogErrors, NotARawlog)
 	expectInputError([&] { RawlogReader r(dir + "/text.rawlog"); }, {dir + "/text.rawlog", "not an MRPT rawlog"});
 	putBytes(dir + "/empty.rawlog", "");
 	expectInputError([&] { RawlogReader r(dir + "/empty.rawlog"); }, {"empty rawlog"});
-	expectInputError([&] { RawlogReader r(dir); }, {dir, "not a regular file"});
+	expectInputError([&] { RawlogReader r(dir); }, {dir, "is a directory, expected a file"});
 }
 
 TEST(RawlogErrors, TruncatedGzipAnywhereIsACleanError)
@@ -102,6 +102,51 @@ TEST(RawlogErrors, CorruptGzipData)
 	for (std::size_t i = bytes.size() / 2; i < bytes.size() / 2 + 200; ++i) bytes[i] = static_cast<char>(i * 7);
 	putBytes(dir + "/bad.rawlog", bytes);
 	expectInputError([&] { readFrames(dir + "/bad.rawlog"); }, {dir + "/bad.rawlog"});
+}
+
+// Issue 34, defect 4: a corrupt string length (here the sensor label's, 6 -> 1 MB) made MRPT read past the end of
+// a complete gzip file, which was reported as "truncated".
+TEST(RawlogErrors, ACorruptLengthInACompleteGzipFileIsCorruptNotTruncated)
+{
+	const std::string dir = freshDir();
+	writeFrames(dir + "/full.rawlog", 4, false, 500);
+	const std::string plain = dir + "/plain.rawlog";
+	ASSERT_EQ(std::system(("gzip -dc '" + dir + "/full.rawlog' > '" + plain + "'").c_str()), 0);
+	std::string bytes = fileBytes(plain);
+	const auto label = bytes.rfind(std::string("\x06\0\0\0CAMERA", 10));
+	ASSERT_NE(label, std::string::npos);
+	bytes[label + 2] = '\x10';  // 6 + 1 MB
+	putBytes(plain, bytes);
+	ASSERT_EQ(std::system(("gzip -c '" + plain + "' > '" + dir + "/bad.rawlog'").c_str()), 0);
+	expectInputError([&] { readFrames(dir + "/bad.rawlog"); }, {dir + "/bad.rawlog: corrupt rawlog at object", "runs past the end"});
+	expectInputError([&] { readFrames(plain); }, {plain, "truncated"});  // a plain file cannot tell the two apart
+}
+
+// Issue 34, defect 4: one flipped byte in a gzip rawlog said "empty rawlog: no observations" (zlib stops at
+// the damage, which read as the end of the data).
+TEST(RawlogErrors, OneFlippedByteOfAGzipRawlogIsCorruptNotEmpty)
+{
+	const std::string dir = freshDir();
+	const std::string bytes = fileBytes(writeFrames(dir + "/full.rawlog", 6, false, 3000));
+	const std::string bad = dir + "/flipped.rawlog";
+	for (const std::size_t at : {std::size_t(10), std::size_t(11), std::size_t(16), std::size_t(64), bytes.size() / 2,
+			 bytes.size() - 6})
+	{
+		std::string flipped = bytes;
+		flipped[at] = static_cast<char>(flipped[at] ^ 0xFF);
+		putBytes(bad, flipped);
+		try
+		{
+			readFrames(bad);
+			ADD_FAILURE() << "byte " << at << ": no error";
+		}
+		catch (const InputError& e)
+		{
+			const std::string m = e.what();
+			EXPECT_NE(m.find(bad + ": corrupt"), std::string::npos) << "byte " << at << ": " << m;
+			EXPECT_EQ(m.find("empty"), std::string::npos) << "byte " << at << ": " << m;
+		}
+	}
 }
 
 TEST(RawlogErrors, UnknownSensorLabelListsTheLabelsSeen)

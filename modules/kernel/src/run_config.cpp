@@ -1,4 +1,6 @@
 #include <vlo/core/error.h>
+#include <vlo/core/ini_text.h>
+#include <vlo/core/input_file.h>
 #include <vlo/core/option_table.h>
 #include <vlo/kernel/run_config.h>
 
@@ -9,39 +11,18 @@ namespace vlo
 {
 namespace
 {
-/// A file the user gives as an INI must look like one: text, every line a comment, a [section], a
-/// key = value inside a section, or an MRPT @directive; and at least one section.
+/// A file the user gives as an INI must look like one (scanIniText: text, every line a comment, a [section],
+/// a key = value inside a section, or an MRPT @directive; nothing given twice), and have a section.
 void checkIniSyntax(const std::string& text, const std::string& path)
 {
-	if (text.find('\0') != std::string::npos) failInput(path, "not an INI file (binary content)");
-	std::istringstream in(text);
-	std::string line;
-	bool section = false;
-	for (int n = 1; std::getline(in, line); ++n)
-	{
-		const std::string t = trimmed(line);
-		const std::string where = path + ": line " + std::to_string(n);
-		if (t.empty() || t[0] == '#' || t[0] == ';' || t.rfind("//", 0) == 0 || t[0] == '@') continue;
-		if (t[0] == '[')
-		{
-			const auto close = t.find(']');
-			const std::string rest = close == std::string::npos ? "" : trimmed(t.substr(close + 1));
-			if (close == std::string::npos || close < 2 || !(rest.empty() || rest[0] == '#' || rest[0] == ';'))
-				failInput(where, "malformed section header '" + printable(t) + "'");
-			section = true;
-			continue;
-		}
-		const auto eq = t.find('=');
-		if (eq == std::string::npos || trimmed(t.substr(0, eq)).empty())
-			failInput(where, "'" + printable(t) + "' is not 'key = value', a [section] or a comment: is this an INI file?");
-		if (!section) failInput(where, "'" + printable(t) + "' comes before any [section]");
-	}
-	if (!section) failInput(path, "no [section] in the file: is this an INI file? (see ini/ for examples)");
+	if (scanIniText(text, path).empty())
+		failInput(path, "no [section] in the file: is this an INI file? (see ini/ for examples)");
 }
 }  // namespace
 
 RunConfig RunConfig::fromFile(const std::string& path, const std::vector<std::string>& overrides)
 {
+	requireInputFile(path);
 	std::ifstream in(path);
 	if (!in) failInput(path, "cannot open INI file");
 	std::stringstream ss;

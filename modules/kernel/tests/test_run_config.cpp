@@ -93,3 +93,28 @@ TEST(RunConfig, FilesThatAreNotIniAreRefusedNamingTheFile)
 	expectError("header.ini", "[pipeline\nmode = vlo\n", "line 1: malformed section header");
 	EXPECT_EQ(errorFor("good.ini", "# c\n; c\n[pipeline]\nmode = vlo  # why\n@define X 3\n"), "");
 }
+
+// Issue 34, defect 2: MRPT keeps the last of a key given twice and merges a section given twice, silently;
+// vlo-batch refused them in plans, vlo-run took them.
+TEST(RunConfig, AKeyOrASectionGivenTwiceIsRefused)
+{
+	const std::string dir = ::testing::TempDir();
+	const auto errorFor = [&](const std::string& name, const std::string& content) {
+		std::ofstream(dir + "/" + name) << content;
+		return errorOf([&] { RunConfig::fromFile(dir + "/" + name); });
+	};
+	EXPECT_EQ(errorFor("twice_key.ini", "[pipeline]\nmode = vlo\n[loam]\nmode = lo\n"), "");  // other sections
+	EXPECT_NE(errorFor("twice_key.ini", "[pipeline]\nmode = vlo\n# c\nmode = lo\n")
+				  .find(dir + "/twice_key.ini: line 4: [pipeline] mode: given twice"),
+		std::string::npos);
+	EXPECT_NE(errorFor("twice_section.ini", "[pipeline]\nmode = vlo\n[loam]\n[ pipeline ]\nthreads = 1\n")
+				  .find(dir + "/twice_section.ini: line 4: section [pipeline] given twice (also line 1"),
+		std::string::npos);
+}
+
+// Issue 34, defect 4: a directory given as the INI said "no [section]".
+TEST(RunConfig, ADirectoryIsSaidToBeOne)
+{
+	const std::string e = errorOf([&] { RunConfig::fromFile(::testing::TempDir()); });
+	EXPECT_NE(e.find("is a directory, expected a file"), std::string::npos) << e;
+}

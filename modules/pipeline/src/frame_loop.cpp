@@ -80,7 +80,17 @@ void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions
 	for (;;)
 	{
 		auto cur = std::make_shared<FrameInFlight>();
-		if (!frames.next(cur->frame)) break;
+		bool more = false;
+		try
+		{
+			more = frames.next(cur->frame);
+		}
+		catch (const InputError& e)
+		{
+			worker.wait();  // the frames before end first, as in a serial run
+			throw InputEndedEarly(e);
+		}
+		if (!more) break;
 		if (stages.motion)
 		{
 			try

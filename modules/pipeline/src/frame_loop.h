@@ -1,6 +1,7 @@
 #pragma once
 // The frame loop of a run: each frame through the motion source, then the LiDAR odometry, into the
 // run's outputs; with two threads, reading ahead and the two stages of consecutive frames side by side.
+#include <vlo/core/error.h>
 #include <vlo/core/progress.h>
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/kernel/lidar_odometry.h>
@@ -14,6 +15,13 @@
 
 namespace vlo
 {
+/// The input failed after the frame loop started (a rawlog cut short or damaged in the middle, an image
+/// missing): the frames before it are the run's, and runPipeline keeps them.
+struct InputEndedEarly : InputError
+{
+	explicit InputEndedEarly(const InputError& e) : InputError(e) {}
+};
+
 /// The modules of a run, created by name and configured.
 struct Stages
 {
@@ -25,7 +33,8 @@ struct Stages
 /// outputs.table per frame, outputs.lidar, the sample frames, and the scans of map.pcd into `map`.
 /// Each scan gets its point times ([lidar]) before the LiDAR odometry sees it.
 /// With [pipeline] threads 2 the outputs are the same as with 1 (doc/SPEED.md). Returns once every
-/// thread it started has ended, also when it throws.
+/// thread it started has ended, also when it throws: InputEndedEarly when reading fails, Interrupted
+/// after a frame's row on Ctrl-C, with the rows of the frames before complete.
 void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const PointTimeOptions& times,
 	const RunPlan& plan, RunOutputs& outputs, GlobalMap& map, ProgressLine& progress);
 }  // namespace vlo

@@ -1,8 +1,10 @@
 // The run loop, as the paper's figure: frame -> motion source -> LiDAR odometry -> outputs.
 #include <vlo/core/error.h>
+#include <vlo/core/interrupt.h>
 #include <vlo/core/log.h>
 #include <vlo/core/progress.h>
 #include <vlo/core/stopwatch.h>
+#include <vlo/eval/camera_frame.h>
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/kernel/scale_correction.h>
 #include <vlo/kernel/visual_odometry.h>
@@ -16,6 +18,8 @@
 
 #include <unistd.h>
 
+#include <cstdio>
+#include <exception>
 #include <filesystem>
 
 #include "frame_loop.h"
@@ -34,6 +38,27 @@ void checkOutputDir(const std::string& dir)
 	while (!p.empty() && !fs::exists(p, ec) && p != p.parent_path()) p = p.parent_path();
 	if (!fs::is_directory(p, ec)) failInput(dir, "cannot create output folder (" + p.string() + " is not a folder)");
 	if (::access(p.c_str(), W_OK) != 0) failInput(dir, "cannot create output folder (" + p.string() + " is not writable)");
+}
+
+/// After the outputs of an early stop are written: the stop again, saying what was kept.
+[[noreturn]] void throwStoppedEarly(const std::exception_ptr& stop, const RunSummary& s, const std::string& out)
+{
+	const std::string frames = s.frames == 1 ? "the 1 frame, frame " + std::to_string(s.last_frame) + ", is"
+											 : "the " + std::to_string(s.frames) + " frames up to frame " +
+				std::to_string(s.last_frame) + " are";
+	const std::string kept = frames + " kept in " + out + " (summary.json: \"complete\": false)";
+	try
+	{
+		std::rethrow_exception(stop);
+	}
+	catch (const Interrupted&)
+	{
+		throw Interrupted(kept);
+	}
+	catch (const InputError& e)
+	{
+		failInput(e.what(), "the run stopped there; " + kept);
+	}
 }
 
 void prepareOutputDir(const std::string& dir)
@@ -93,6 +118,10 @@ RunSummary runPipeline(const RunRequest& req)
 		plan.motion_source.empty() ? "none" : plan.motion_source.c_str(), plan.lidar_odometry ? popt.lidar_odometry.c_str() : "none");
 	checkOutputDir(req.out);
 	RunFolder folder(req.out, req.overwrite);
+	// Every input is read and checked before the first frame: a bad one found at the end would cost the run.
+	if (!req.gt.empty()) readTum(req.gt);
+	std::optional<Eigen::Isometry3d> cam0_T_vehicle;
+	if (!req.kitti_calib.empty()) cam0_T_vehicle = readKittiCalibTr(req.kitti_calib);
 
 	RawlogReaderOptions ropt;
 	ropt.camera_label = popt.camera_label;
@@ -108,29 +137,65 @@ RunSummary runPipeline(const RunRequest& req)
 	GlobalMap globalMap(popt.map_voxel, popt.map_max_range);
 	ProgressLine progress("vlo-run: frame", 0);
 	const auto loopStart = SteadyClock::now();
-	runFrames(reader, stages, popt, times, plan, outputs, globalMap, progress);
+	std::exception_ptr stop;  // why the frame loop ended before the input did, if it did
+	std::string stopReason;
+	try
+	{
+		runFrames(reader, stages, popt, times, plan, outputs, globalMap, progress);
+	}
+	catch (const Interrupted&)
+	{
+		stop = std::current_exception(), stopReason = "interrupted (Ctrl-C or SIGTERM)";
+	}
+	catch (const InputEndedEarly& e)
+	{
+		stop = std::current_exception(), stopReason = e.what();
+	}
 	progress.finish();
 	const double loopSeconds = msSince(loopStart) / 1000.0;
+	const bool noTrajectory = !plan.lidar_odometry && (!stages.motion || stages.motion->trajectory().empty());
+	if (stop && (outputs.table.rows() == 0 || noTrajectory)) std::rethrow_exception(stop);  // nothing to keep
 	if (outputs.table.rows() == 0) failInput(req.rawlog, "no frame to process");
-	if (!plan.lidar_odometry && (!stages.motion || stages.motion->trajectory().empty()))
+	if (noTrajectory)
 		failInput(req.rawlog, "the visual odometry never initialised in " + std::to_string(outputs.table.rows()) +
 				" frames: no trajectory to write (too few frames, or too little texture or motion)");
 
 	outputs.map = globalMap.takePoints();
+	outputs.cam0_T_vehicle = cam0_T_vehicle;
+	if (!outputs.cam0_T_vehicle && reader.vehicleTCamera0()) outputs.cam0_T_vehicle = reader.vehicleTCamera0()->inverse();
 	prepareOutputDir(req.out);
 	folder.clearPreviousRun();
-	RunSummary summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);
-	summary.frames = outputs.table.rows();
-	summary.seconds = loopSeconds;
-	summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;
-	summary.reader_stats = reader.statsSummary();
-	summary.stage_timings = stageTimings(outputs.table);
-	writeSummaryJson(req.out + "/summary.json", summary, req);
-	writeRunReport(req.out, summary, req, outputs.table, popt.snapshots);
-	folder.recordWritten();
+	RunSummary summary;
+	try
+	{
+		summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);
+		summary.frames = outputs.table.rows();
+		summary.seconds = loopSeconds;
+		summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;
+		summary.reader_stats = reader.statsSummary();
+		summary.stage_timings = stageTimings(outputs.table);
+		summary.complete = !stop;
+		summary.stop_reason = stopReason;
+		summary.last_frame = static_cast<long long>(outputs.table.numbers("frame").back());
+		writeSummaryJson(req.out + "/summary.json", summary, req);
+		writeRunReport(req.out, summary, req, outputs.table, popt.snapshots);
+		folder.recordWritten();
+	}
+	catch (...)
+	{
+		folder.removeWritten();  // e.g. a full disk: no run without its summary and list of files
+		throw;
+	}
 	logger().logStr(mrpt::system::LVL_DEBUG, summary.reader_stats);
+	// With two threads the stages of consecutive frames overlap: each frame's ms_total then exceeds the wall
+	// time per frame, which is said beside it.
+	char wall[160];
+	std::snprintf(wall, sizeof(wall), "\nwall time per frame: %.2f ms with %d thread%s (ms_total: each frame's own time in its stages%s)",
+		summary.ms_per_frame, popt.threadCount(), popt.threadCount() > 1 ? "s" : "",
+		popt.threadCount() > 1 ? ", which overlap with other frames'" : "");
 	logger().logStr(mrpt::system::LVL_INFO, "time per stage over " + std::to_string(summary.frames) + " frames (frames.csv):\n" +
-			formatStageTimings(summary.stage_timings));
+			formatStageTimings(summary.stage_timings) + wall);
+	if (stop) throwStoppedEarly(stop, summary, req.out);
 	return summary;
 }
 }  // namespace vlo

@@ -8,6 +8,22 @@
 namespace vlo
 {
 namespace fs = std::filesystem;
+
+std::set<std::string> filesWhereRunsWrite(const std::string& dir_name)
+{
+	const fs::path dir(dir_name);
+	std::set<std::string> files;
+	std::error_code ec;
+	for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+		if (it->is_regular_file(ec)) files.insert(it->path().filename().string());
+	const fs::path snapshots = dir / "snapshots";
+	if (!fs::is_directory(snapshots, ec)) return files;
+	for (auto it = fs::recursive_directory_iterator(snapshots, ec); !ec && it != fs::recursive_directory_iterator();
+		 it.increment(ec))
+		if (it->is_regular_file(ec)) files.insert(fs::relative(it->path(), dir, ec).generic_string());
+	return files;
+}
+
 namespace
 {
 bool isVloRunFile(const std::string& name)
@@ -17,14 +33,18 @@ bool isVloRunFile(const std::string& name)
 	return trajectory || name == "summary.json" || name == "run.ini" || name == "frames.csv" || name == "map.pcd";
 }
 
-/// Relative paths of the regular files under dir.
-std::set<std::string> filesUnder(const fs::path& dir)
+/// The folder as an absolute path without a trailing separator ("out/" and "out" alike).
+fs::path absoluteFolder(const std::string& dir)
 {
-	std::set<std::string> files;
 	std::error_code ec;
-	for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-		if (it->is_regular_file()) files.insert(fs::relative(it->path(), dir).generic_string());
-	return files;
+	fs::path p = fs::absolute(dir, ec).lexically_normal();
+	return p.has_filename() ? p : p.parent_path();
+}
+
+bool holdsAnything(const std::string& dir)
+{
+	std::error_code ec;
+	return fs::is_directory(dir, ec) && fs::directory_iterator(dir, ec) != fs::directory_iterator();
 }
 
 /// The manifest's paths; none that leaves the folder. Before manifests: the files every run leaves
@@ -43,7 +63,7 @@ std::set<std::string> previousRunFiles(const fs::path& dir)
 		files.insert(RunFolder::kManifest);
 		return files;
 	}
-	for (const auto& f : filesUnder(dir))
+	for (const auto& f : filesWhereRunsWrite(dir.string()))
 	{
 		const fs::path p(f);
 		const bool snapshot = p.parent_path() == "snapshots" && p.extension() == ".png";
@@ -55,8 +75,15 @@ std::set<std::string> previousRunFiles(const fs::path& dir)
 
 RunFolder::RunFolder(std::string dir, bool overwrite) : dir_(std::move(dir))
 {
-	if (!overwrite && holdsRun(dir_))
+	std::error_code ec;
+	for (fs::path p = absoluteFolder(dir_); !p.empty() && !fs::exists(p, ec) && p != p.parent_path(); p = p.parent_path())
+		first_made_ = p.string();
+	if (overwrite) return;
+	if (holdsRun(dir_))
 		failInput(dir_, "holds the files of another run: give --overwrite to replace them, or another --out folder");
+	if (holdsAnything(dir_))
+		failInput(dir_, "is a folder with other files and no run in it: give --overwrite to write the run beside them, "
+						"or another --out folder");
 }
 
 bool RunFolder::holdsRun(const std::string& dir)
@@ -64,8 +91,8 @@ bool RunFolder::holdsRun(const std::string& dir)
 	std::error_code ec;
 	if (!fs::is_directory(dir, ec)) return false;
 	if (fs::exists(fs::path(dir) / kManifest, ec)) return true;
-	for (const auto& e : fs::directory_iterator(dir, ec))
-		if (e.is_regular_file() && isVloRunFile(e.path().filename().string())) return true;
+	for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+		if (it->is_regular_file(ec) && isVloRunFile(it->path().filename().string())) return true;
 	return false;
 }
 
@@ -81,12 +108,27 @@ void RunFolder::clearPreviousRun()
 		// Folders the previous run made (snapshots/) go with their last file.
 		for (p = p.parent_path(); p != root && fs::is_empty(p, ec) && !ec; p = p.parent_path()) fs::remove(p, ec);
 	}
-	before_ = filesUnder(root);
+	before_ = filesWhereRunsWrite(dir_);
+}
+
+void RunFolder::removeWritten() const
+{
+	std::error_code ec;
+	for (const auto& f : filesWhereRunsWrite(dir_))
+		if (!before_.count(f)) fs::remove(fs::path(dir_) / f, ec);
+	const fs::path snapshots = fs::path(dir_) / "snapshots";
+	if (fs::is_directory(snapshots, ec) && fs::is_empty(snapshots, ec)) fs::remove(snapshots, ec);
+	if (first_made_.empty()) return;
+	for (fs::path p = absoluteFolder(dir_); !p.empty() && fs::is_empty(p, ec) && !ec; p = p.parent_path())
+	{
+		fs::remove(p, ec);
+		if (p == first_made_) break;
+	}
 }
 
 void RunFolder::recordWritten() const
 {
-	const std::set<std::string> now = filesUnder(dir_);
+	const std::set<std::string> now = filesWhereRunsWrite(dir_);
 	AtomicOutputFile manifest(dir_ + "/" + kManifest);
 	for (const auto& f : now)
 		if (!before_.count(f) && f != kManifest) manifest.stream() << f << "\n";

@@ -1,4 +1,5 @@
 #include <vlo/core/atomic_file.h>
+#include <vlo/core/build_info.h>
 #include <vlo/core/error.h>
 #include <vlo/core/log.h>
 #include <vlo/eval/association.h>
@@ -25,6 +26,17 @@ double maxStep(const Trajectory& t)
 	for (std::size_t i = 1; i < t.size(); ++i)
 		m = std::max(m, (t[i].pose.translation() - t[i - 1].pose.translation()).norm());
 	return m;
+}
+
+/// trajectory_<name>.tum, and with KITTI's camera 0 known trajectory_<name>.kitti.txt: the poses of camera 0
+/// in its frame at the first frame, as the KITTI devkit reads them. The devkit pairs poses by line, so only a
+/// trajectory with a pose for each of the run's frames gets one (not a VO that started late or got lost).
+void writeTrajectory(const std::string& dir, const std::string& name, const Trajectory& traj,
+	const std::optional<Eigen::Isometry3d>& cam0_T_vehicle, std::size_t frames)
+{
+	writeTum(dir + "/trajectory_" + name + ".tum", traj);
+	if (cam0_T_vehicle && traj.size() == frames)
+		writeKittiPoses(dir + "/trajectory_" + name + ".kitti.txt", vehicleToCamera(relativeToFirst(traj), *cam0_T_vehicle));
 }
 
 /// Mode vo alone: the VO's path is in map units, so it is Sim(3)-aligned to the ground truth when there is
@@ -107,11 +119,14 @@ RunSummary RunOutputs::write(
 {
 	RunSummary s;
 	s.mode = plan.name;
-	const Trajectory motion = motion_source ? motion_source->trajectory() : Trajectory{};
+	Trajectory motion = motion_source ? motion_source->trajectory() : Trajectory{};
+	// A run stopped early with two threads: the motion source may be a few frames past the last row.
+	const double last_t = table.numbers("t").back();
+	while (!motion.empty() && motion.back().t > last_t + 1e-9) motion.pop_back();
 	const Trajectory& finalTraj = plan.lidar_odometry ? lidar : motion;
 	s.final_trajectory = "trajectory_" + plan.name + ".tum";
-	if (!lidar.empty()) writeTum(dir + "/" + s.final_trajectory, lidar);
-	if (!motion.empty()) writeTum(dir + "/trajectory_vo.tum", motion);
+	if (!lidar.empty()) writeTrajectory(dir, plan.name, lidar, cam0_T_vehicle, table.rows());
+	if (!motion.empty()) writeTrajectory(dir, "vo", motion, cam0_T_vehicle, table.rows());
 	s.path_length_m = pathLength(finalTraj);
 	s.max_step_m = maxStep(finalTraj);
 	if (motion_source) s.figures = motion_source->figures();
@@ -119,7 +134,10 @@ RunSummary RunOutputs::write(
 	if (!map.empty()) writePcd(dir + "/map.pcd", map);
 	{
 		AtomicOutputFile ini(dir + "/run.ini");
-		ini.stream() << "# Effective options of this run (defaults included).\n" << effectiveIni;
+		const BuildInfo& b = buildInfo();
+		ini.stream() << "# Effective options of this run (defaults included).\n# Written by vlo " << b.version << ", git "
+					 << b.git_commit << ", " << b.build_type << " build.\n"
+					 << effectiveIni;
 		ini.commit();
 	}
 	if (opt.snapshots)
@@ -143,7 +161,11 @@ RunSummary RunOutputs::write(
 void writeSummaryJson(const std::string& path, const RunSummary& s, const RunRequest& req)
 {
 	// Keys in this order; a NaN or infinite figure is written as null (doc/FORMATS.md).
-	nlohmann::ordered_json j = {{"mode", s.mode}, {"rawlog", req.rawlog}, {"ini", req.ini}, {"frames", s.frames},
+	const BuildInfo& b = buildInfo();
+	nlohmann::ordered_json j = {{"mode", s.mode}, {"rawlog", req.rawlog}, {"ini", req.ini}, {"version", b.version},
+		{"git_commit", b.git_commit}, {"build_type", b.build_type}, {"complete", s.complete},
+		{"stop_reason", s.complete ? nlohmann::ordered_json() : nlohmann::ordered_json(s.stop_reason)},
+		{"last_frame", s.last_frame}, {"frames", s.frames},
 		{"seconds", s.seconds}, {"ms_per_frame", s.ms_per_frame}, {"path_length_m", s.path_length_m},
 		{"max_step_m", s.max_step_m}, {"trajectory", s.final_trajectory}, {"reader", s.reader_stats}};
 	for (const auto& [key, value] : s.figures)

@@ -2,6 +2,7 @@
 #include <vlo/core/error.h>
 #include <vlo/core/log.h>
 #include <vlo/eval/report.h>
+#include <vlo/pipeline/run_folder.h>
 #include <vlo/pipeline/run_report.h>
 #include <vlo/viz/eval_plots.h>
 #include <vlo/viz/series.h>
@@ -17,14 +18,11 @@ namespace
 {
 constexpr double kBudgetMs = 100;  ///< one frame of a 10 Hz LiDAR
 
-/// Relative paths of the regular files under dir, sorted.
+/// Relative paths of the files where a run writes, sorted.
 std::vector<std::string> filesIn(const std::string& dir)
 {
-	std::vector<std::string> files;
-	for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
-		if (e.is_regular_file()) files.push_back(std::filesystem::relative(e.path(), dir).generic_string());
-	std::sort(files.begin(), files.end());
-	return files;
+	const auto files = filesWhereRunsWrite(dir);
+	return {files.begin(), files.end()};
 }
 
 bool has(const std::vector<std::string>& files, const std::string& f)
@@ -115,6 +113,7 @@ std::string runReportMarkdown(const RunSummary& s, const RunRequest& req, const 
 	o << "| rawlog | `" << req.rawlog << "` |\n| ini | `" << req.ini << "` |\n";
 	if (!req.gt.empty()) o << "| ground truth | `" << req.gt << "` |\n";
 	o << "| frames | " << s.frames << " |\n";
+	if (!s.complete) o << "| complete | **no**: stopped after frame " << s.last_frame << ": " << s.stop_reason << " |\n";
 	o << "| time | " << fixed(s.seconds, 1) << " s, " << fixed(s.ms_per_frame, 1) << " ms per frame |\n";
 	o << "| path length | " << fixed(s.path_length_m, 1) << " m |\n";
 	o << "| largest step | " << fixed(s.max_step_m, 3) << " m |\n";

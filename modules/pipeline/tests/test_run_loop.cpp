@@ -3,6 +3,7 @@
 // what lands in frames.csv and the trajectories. The fakes move the vehicle 0.5 m forward per frame.
 #include <gtest/gtest.h>
 #include <vlo/core/error.h>
+#include <vlo/core/interrupt.h>
 #include <vlo/io/trajectory.h>
 #include <vlo/kernel/lidar_odometry.h>
 #include <vlo/kernel/scale_correction.h>
@@ -14,6 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -140,6 +144,19 @@ class FailingLidar : public FakeLidar
 	}
 };
 VLO_REGISTER_MODULE(LidarOdometryModule, "failing_lidar", FailingLidar);
+
+/// Ctrl-C while it works on frame 3.
+class InterruptedLidar : public FakeLidar
+{
+   public:
+	Eigen::Isometry3d process(
+		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	{
+		if (frame.index == 3) std::raise(SIGINT);
+		return FakeLidar::process(frame, vehicle_motion, table);
+	}
+};
+VLO_REGISTER_MODULE(LidarOdometryModule, "interrupted_lidar", InterruptedLidar);
 
 /// Fails at frame 4.
 class FailingMonoVo : public FakeMonoVo
@@ -376,4 +393,70 @@ TEST_F(RunLoop, AFailingModuleStopsTheRunWithItsErrorWhateverTheThreads)
 		EXPECT_NE(runError({"pipeline.mode=vlo", t, "pipeline.threads=3"}).find("threads"), std::string::npos);
 		EXPECT_FALSE(std::filesystem::exists(out("frames.csv")));
 	}
+}
+
+// Issue 34, section 2: Ctrl-C keeps the frames computed. The signal's flag stays set for the process, so
+// each run is in a child process (a death test), which leaves its run folder for this one to check.
+TEST_F(RunLoop, CtrlCKeepsAConsistentRunOfTheFramesComputed)
+{
+	for (const char* threads : {"1", "2"})
+	{
+		std::filesystem::remove_all(out(""));
+		const std::vector<std::string> sets = {"pipeline.mode=vlo", std::string("pipeline.threads=") + threads,
+			"pipeline.lidar_odometry=interrupted_lidar"};
+		EXPECT_EXIT(
+			{
+				installInterruptHandler();
+				try
+				{
+					run(sets);
+				}
+				catch (const Interrupted& e)
+				{
+					std::fprintf(stderr, "interrupted: %s\n", e.what());
+					std::exit(130);
+				}
+				std::exit(0);
+			},
+			::testing::ExitedWithCode(130), "interrupted: the 4 frames up to frame 3 are kept in .*out")
+			<< threads;
+		std::ifstream in(out("summary.json"));
+		ASSERT_TRUE(in) << threads;
+		const auto summary = nlohmann::json::parse(in);
+		EXPECT_EQ(summary["complete"], false);
+		EXPECT_EQ(summary["stop_reason"], "interrupted (Ctrl-C or SIGTERM)");
+		EXPECT_EQ(summary["last_frame"], 3);
+		EXPECT_EQ(summary["frames"], 4);
+		EXPECT_EQ(column(out("frames.csv"), "frame"), (std::vector<std::string>{"0", "1", "2", "3"})) << threads;
+		// Every trajectory ends at the last row, also the motion source's, which with two threads ran ahead.
+		for (const char* traj : {"trajectory_vlo.tum", "trajectory_vo.tum"})
+		{
+			const Trajectory t = readTum(out(traj));
+			ASSERT_FALSE(t.empty()) << traj;
+			EXPECT_NEAR(t.back().t, 0.3, 1e-9) << traj << " threads " << threads;
+		}
+		std::ifstream manifest(out(".vlo-run-files"));
+		std::string files((std::istreambuf_iterator<char>(manifest)), {});
+		for (const char* f : {"summary.json", "frames.csv", "run.ini", "report.md", "trajectory_vlo.tum"})
+			EXPECT_NE(files.find(f), std::string::npos) << f << " not in the run's list of files";
+	}
+}
+
+// Issue 34, section 1: with the rig's camera 0 known (here --kitti-calib), a trajectory with a pose for every
+// frame is also written as KITTI poses; the VO's, which starts at frame 1, is not (the devkit pairs by line).
+TEST_F(RunLoop, KittiPosesForTrajectoriesWithAPoseForEveryFrame)
+{
+	std::ofstream(dir_ + "/calib.txt") << "P0: 50 0 20 0 0 50 15 0 0 0 1 0\nTr: 0 -1 0 0 0 0 -1 0 1 0 0 0\n";
+	std::ofstream(dir_ + "/run.ini") << "[pipeline]\nvisual_odometry = fake_mono\nscale_correction = fake_scale\n"
+										"lidar_odometry = fake_lidar\nsnapshots = false\nmap_every = 0\n";
+	RunRequest req{dir_ + "/drive.rawlog", dir_ + "/run.ini", dir_ + "/out", {"pipeline.mode=vlo"}, ""};
+	req.kitti_calib = dir_ + "/calib.txt";
+	runPipeline(req);
+	const Trajectory kitti = readKittiPoses(out("trajectory_vlo.kitti.txt"));
+	ASSERT_EQ(kitti.size(), std::size_t(kFrames));
+	// The vehicle's 0.5 m per frame along its x is camera 0's z.
+	EXPECT_NEAR(kitti.back().pose.translation().z(), kStep * (kFrames - 1), 1e-9);
+	EXPECT_NEAR(kitti.back().pose.translation().norm(), kStep * (kFrames - 1), 1e-9);
+	EXPECT_TRUE(std::filesystem::exists(out("trajectory_vo.tum")));
+	EXPECT_FALSE(std::filesystem::exists(out("trajectory_vo.kitti.txt")));
 }

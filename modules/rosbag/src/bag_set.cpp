@@ -1,3 +1,5 @@
+#include <vlo/core/input_file.h>
+#include <vlo/core/interrupt.h>
 #include <vlo/rosbag/bag_set.h>
 #include <vlo/rosbag/bag_structure.h>
 
@@ -28,8 +30,8 @@ BagSet::BagSet(const std::vector<std::string>& paths)
 	std::map<std::string, TopicInfo> topics;
 	for (const auto& path : paths)
 	{
+		requireInputFile(path);
 		std::error_code ec;
-		if (!std::filesystem::is_regular_file(path, ec)) failInput(path, "cannot open (no such file)");
 		bytes_ += std::filesystem::file_size(path, ec);
 		checkBagStructure(path);
 		try
@@ -97,6 +99,7 @@ void BagSet::forEach(const std::vector<std::string>& topics, const std::function
 		std::size_t n = 0;
 		for (const auto& m : view)
 		{
+			throwIfInterrupted();  // at every message: a bag of fewer than 64 never reaches the progress line
 			if (!f(m)) break;
 			if (progress && ++n % 64 == 0) progress(span > 0 ? (seconds(m.getTime()) - begin) / span : 0.0);
 		}

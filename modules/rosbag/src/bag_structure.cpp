@@ -185,6 +185,10 @@ void checkBagStructure(const std::string& path)
 		}
 		p = r.data_pos + r.data_len;
 	}
-	if (index_pos != 0 && !records.count(index_pos)) failInput(path, "not a readable ROS 1 bag (truncated or corrupt?): its index position is no record");
+	// A recording that was not closed (the recorder killed, the power lost) has no index; rosbag can rebuild it.
+	const std::string reindex = "; 'rosbag reindex " + path + "' rebuilds the index of a bag whose recording was cut short";
+	if (index_pos == 0) failInput(path, "the bag has no index (index_pos is 0)" + reindex);
+	if (!records.count(index_pos))
+		failInput(path, "not a readable ROS 1 bag (truncated or corrupt?): its index position is no record" + reindex);
 }
 }  // namespace vlo::rosbag_io

@@ -1,9 +1,8 @@
 #include <vlo/core/error.h>
 #include <vlo/rosbag/camera_info.h>
+#include <vlo/rosbag/yaml_file.h>
 
 #include <mrpt/containers/yaml.h>
-
-#include <filesystem>
 
 namespace vlo::rosbag_io
 {
@@ -26,12 +25,10 @@ std::vector<double> matrixData(const mrpt::containers::yaml& doc, const char* ke
 
 sensor_msgs::CameraInfo readCameraInfoFile(const std::string& path)
 {
-	std::error_code ec;
-	if (!std::filesystem::is_regular_file(path, ec)) failInput(path, "cannot open (no such file)");
 	sensor_msgs::CameraInfo ci;
 	try
 	{
-		const auto doc = mrpt::containers::yaml::FromFile(path);
+		const auto doc = readYamlFile(path);
 		if (!doc.isMap()) failInput(path, "not a camera calibration YAML (image_width, camera_matrix, ...)");
 		for (const char* key : {"image_width", "image_height", "distortion_model"})
 			if (!doc.has(key)) failInput(path, std::string("no key ") + key);

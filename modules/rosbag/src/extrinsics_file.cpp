@@ -1,22 +1,20 @@
 #include <vlo/core/error.h>
 #include <vlo/rosbag/extrinsics_file.h>
+#include <vlo/rosbag/yaml_file.h>
 
 #include <mrpt/containers/yaml.h>
 
 #include <cmath>
-#include <filesystem>
 
 namespace vlo::rosbag_io
 {
 Eigen::Isometry3d readExtrinsicsFile(const std::string& path)
 {
-	std::error_code ec;
-	if (!std::filesystem::is_regular_file(path, ec)) failInput(path, "cannot open (no such file)");
 	const std::string format = "expected 'lidar_T_camera: [16 numbers]' (row-major 4x4, camera optical frame in LiDAR frame)";
 	Eigen::Matrix4d M;
 	try
 	{
-		const auto doc = mrpt::containers::yaml::FromFile(path);
+		const auto doc = readYamlFile(path);
 		if (!doc.isMap() || !doc.has("lidar_T_camera")) failInput(path, "no key lidar_T_camera; " + format);
 		const auto& seq = doc["lidar_T_camera"];
 		if (!seq.isSequence() || seq.asSequence().size() != 16) failInput(path, "lidar_T_camera: " + format);

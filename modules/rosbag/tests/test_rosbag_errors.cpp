@@ -1,6 +1,10 @@
 // Broken input: one-line InputError naming the file (bag, or the option), and no output left behind.
 #include "rosbag_test_util.h"
 
+#include <vlo/core/interrupt.h>
+
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -29,6 +33,48 @@ TEST(RosbagErrors, TruncatedBag)
 	fs::resize_file(dir + "/cut.bag", size * 2 / 3);
 	fs::remove(dir + "/full.bag");
 	expectRefused(importOptions(dir + "/cut.bag", dir + "/out.rawlog"), {dir + "/cut.bag", "truncated"});
+}
+
+// Issue 34, defect 11: a bag whose recording was not closed has no index; say how to rebuild it.
+TEST(RosbagErrors, UnindexedBagGetsTheReindexHint)
+{
+	const std::string dir = freshDir();
+	writeBag(dir + "/in.bag", fewFrames(), {}, {});
+	std::ifstream in(dir + "/in.bag", std::ios::binary);
+	std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+	const std::size_t at = bytes.find("index_pos=");
+	ASSERT_NE(at, std::string::npos);
+	bytes.replace(at + 10, 8, std::string(8, '\0'));
+	std::ofstream(dir + "/open.bag", std::ios::binary) << bytes;
+	fs::remove(dir + "/in.bag");
+	expectRefused(importOptions(dir + "/open.bag", dir + "/out.rawlog"),
+		{dir + "/open.bag", "the bag has no index", "'rosbag reindex " + dir + "/open.bag'"});
+	std::ofstream(dir + "/cut.bag", std::ios::binary) << bytes.replace(at + 10, 8, std::string("\x01\0\0\0\0\0\0\0", 8));
+	expectRefused(importOptions(dir + "/cut.bag", dir + "/out.rawlog"), {"truncated", "rosbag reindex"});
+}
+
+// Issue 34, defect 6: the signal was only looked at every 64 messages, so a short bag's import ignored Ctrl-C.
+TEST(RosbagErrors, CtrlCStopsTheImportOfAShortBag)
+{
+	const std::string dir = freshDir();
+	writeBag(dir + "/in.bag", fewFrames(), {}, {});  // 6 messages
+	const RosbagImport opt = importOptions(dir + "/in.bag", dir + "/out.rawlog");
+	EXPECT_EXIT(
+		{
+			installInterruptHandler();
+			std::raise(SIGINT);
+			try
+			{
+				importRosbag(opt);
+			}
+			catch (const Interrupted&)
+			{
+				std::exit(fs::exists(opt.out) ? 1 : 130);
+			}
+			std::exit(0);
+		},
+		::testing::ExitedWithCode(130), "");
+	EXPECT_FALSE(fs::exists(opt.out));
 }
 
 /// A copy of in.bag with 4 bytes at `pos` replaced by `value`.

@@ -1,4 +1,5 @@
 #include "canvas.h"
+#include "hershey_text.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -27,7 +28,7 @@ constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
 cv::Size textSize(const std::string& text, double scale, int thickness)
 {
 	int baseline = 0;
-	return cv::getTextSize(text, kFont, scale, thickness, &baseline);
+	return cv::getTextSize(hersheyText(text), kFont, scale, thickness, &baseline);
 }
 
 void text(cv::Mat& img, const std::string& s, cv::Point at, double scale, cv::Scalar color, HAlign h, VAlign v,
@@ -36,7 +37,7 @@ void text(cv::Mat& img, const std::string& s, cv::Point at, double scale, cv::Sc
 	const cv::Size sz = textSize(s, scale, thickness);
 	const int x = h == HAlign::Left ? at.x : h == HAlign::Center ? at.x - sz.width / 2 : at.x - sz.width;
 	const int y = v == VAlign::Bottom ? at.y : v == VAlign::Middle ? at.y + sz.height / 2 : at.y + sz.height;
-	cv::putText(img, s, {x, y}, kFont, scale, color, thickness, cv::LINE_AA);
+	cv::putText(img, hersheyText(s), {x, y}, kFont, scale, color, thickness, cv::LINE_AA);
 }
 
 void textVertical(cv::Mat& img, const std::string& s, cv::Point center, double scale, cv::Scalar color)

@@ -25,13 +25,20 @@ struct AteResult
 	Sim3 alignment;  ///< applied to the estimate: aligned_i = alignment * est_i
 	double ate_rmse_m = 0, ate_mean_m = 0, ate_max_m = 0;
 	std::optional<double> are_rmse_deg;  ///< empty when the ground truth has no rotations
+	/// Set when the path is nearly straight and too straight for the positions to fix the alignment's rotation
+	/// about the direction of travel (uncertain by more than 1 deg): the ARE then takes that rotation from the
+	/// orientations, and this is how far it turned the positions' choice (deg). ATE and `alignment` keep the
+	/// positions' fit.
+	std::optional<double> are_roll_from_orientations_deg;
+	double are_roll_uncertainty_deg = 0;  ///< of the positions' fit, about the direction of travel
 	/// Scale of the best Sim(3) fit, whatever the alignment applied; empty when the estimate does not move.
 	std::optional<double> sim3_scale;
 	std::size_t n = 0;
 };
 
 /// gt and est are pairs by index (see associate()), at least 3 of them. ARE uses the rotation angle of
-/// G_i^-1 * A * P_i; pass gt_has_rotation = false for translation-only ground truth.
+/// G_i^-1 * A * P_i (A's rotation about a straight path's direction from the orientations, see AteResult);
+/// pass gt_has_rotation = false for translation-only ground truth.
 AteResult computeAte(const Trajectory& gt, const Trajectory& est, Alignment align, bool gt_has_rotation = true);
 
 /// Each pair's position error |g_i - alignment * p_i| (m): what ATE statistics summarise, e.g. to colour a path.

@@ -41,6 +41,11 @@ Eigen::Vector3d offsetOf(const Matrix34d& P);
 
 /// Rigid transform from a 3x4 [R|t] whose R is only nearly orthonormal (6 printed digits).
 Eigen::Isometry3d rigidFrom34(const Matrix34d& M);
+/// The same from 12 numbers, row-major. Throws InputError naming `where` for another count or when the
+/// 3x3 part is no rotation (beyond the rounding of ~10 printed digits).
+Eigen::Isometry3d rigidFromRowMajor(const std::vector<double>& v, const std::string& where);
+/// The same from text: 12 numbers separated by spaces or commas.
+Eigen::Isometry3d rigidFromText(const std::string& text, const std::string& where);
 
 /// Used when calib.txt has no Tr: a vehicle frame with axes x forward, y left, z up at camera 0
 /// (camera x right, y down, z forward), i.e. cam0_T_vehicle with zero translation.
@@ -64,6 +69,7 @@ struct KittiRawCalib
 	Matrix34d velo_to_cam = Matrix34d::Zero();  ///< [R | T] of calib_velo_to_cam.txt, as printed
 	PinholeCamera camera_intrinsics;  ///< from P_rect_0X and S_rect_0X
 	Eigen::Isometry3d camera_T_velo = Eigen::Isometry3d::Identity();  ///< rectified camera X <- Velodyne
+	Eigen::Isometry3d cam0_T_velo = Eigen::Isometry3d::Identity();  ///< rectified camera 0 <- Velodyne
 
 	/// P_rect_0X * R_rect_00 * [R|T], straight from the file values (the reference projection).
 	Matrix34d projection() const;

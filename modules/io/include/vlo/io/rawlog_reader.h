@@ -6,6 +6,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace vlo
@@ -49,6 +50,8 @@ class RawlogReader
 	/// message lists the labels seen) or nothing could be paired.
 	bool next(Frame& frame);
 	const RawlogStats& stats() const;
+	/// KITTI's camera 0 on the vehicle, once the rawlog's note of it has been read (KITTI imports).
+	const std::optional<Eigen::Isometry3d>& vehicleTCamera0() const;
 	/// One line: "N frames; M images and K scans without partner; ..." for logs.
 	std::string statsSummary() const;
 	/// Fraction of the file read so far (for progress lines).

@@ -6,6 +6,8 @@
 // written to "<path>.partial" and the images to "<name>_Images.partial/", both renamed on commit.
 #include <vlo/core/frame.h>
 
+#include <Eigen/Geometry>
+
 #include <memory>
 #include <string>
 
@@ -53,6 +55,9 @@ class RawlogWriter
 	/// grey image in Pnm, .ppm for a colour one).
 	void writeFrame(const Frame& frame, const std::string& camera_label = "CAMERA",
 		const std::string& lidar_label = "LIDAR");
+	/// Notes where KITTI's rectified camera 0 sits on the vehicle (frame_observations.h), at time t; once,
+	/// ahead of the first frame.
+	void noteCamera0(const Eigen::Isometry3d& vehicle_T_camera0, double t);
 	void commit();
 
 	std::size_t observationsWritten() const;

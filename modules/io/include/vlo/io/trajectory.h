@@ -20,6 +20,15 @@ Trajectory readTum(const std::string& path);
 /// Writes atomically (never a half-written file).
 void writeTum(const std::string& path, const Trajectory& traj);
 
+enum class TrajectoryFormat
+{
+	Tum,  ///< 8 numbers a line
+	Kitti  ///< 12 numbers a line
+};
+/// The format of a trajectory file, by the count of numbers on its first line that is neither blank nor a
+/// comment. Throws InputError naming the file when it cannot be read, holds no such line, or has another count.
+TrajectoryFormat trajectoryFormatOf(const std::string& path);
+
 /// Reads KITTI 3x4 poses (one per line); times come from `times` (same count) or are 0.1 s apart.
 Trajectory readKittiPoses(const std::string& path, const std::vector<double>& times = {});
 void writeKittiPoses(const std::string& path, const Trajectory& traj);

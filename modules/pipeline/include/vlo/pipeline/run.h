@@ -14,6 +14,7 @@ struct RunRequest
 	std::string rawlog, ini, out;
 	std::vector<std::string> overrides;  ///< "section.key=value"
 	std::string gt;  ///< optional ground truth TUM, used only to draw snapshots
+	std::string kitti_calib = {};  ///< optional KITTI calib.txt: its Tr places camera 0 (else the rawlog's note, if any)
 	bool overwrite = false;  ///< replace the run that `out` holds (RunFolder)
 };
 
@@ -26,11 +27,18 @@ struct RunSummary
 	double path_length_m = 0;  ///< of the final trajectory
 	double max_step_m = 0;  ///< largest frame-to-frame translation of the final trajectory
 	std::string final_trajectory;  ///< file name inside the output folder
+	/// False when the run stopped before the end of its input (Ctrl-C, a rawlog cut short): its outputs are
+	/// those of the frames up to last_frame, and stop_reason says why.
+	bool complete = true;
+	std::string stop_reason;
+	long long last_frame = -1;  ///< index of the last frame in frames.csv
 	std::string reader_stats;
 	std::vector<std::pair<std::string, double>> figures;  ///< mode-specific counts for summary.json
 	std::vector<StageTiming> stage_timings;  ///< per ms_* column of frames.csv, for summary.json and the log
 };
 
-/// Throws InputError for bad input (files, options, data); nothing is left half-written.
+/// Throws InputError for bad input (files, options, data); nothing is left half-written. A run that stops
+/// early, on Ctrl-C (Interrupted) or input that fails after its first frames (InputError), first writes
+/// the outputs of the frames it computed, with summary.json's "complete": false, then throws saying so.
 RunSummary runPipeline(const RunRequest& request);
 }  // namespace vlo

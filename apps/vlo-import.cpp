@@ -61,7 +61,7 @@ int kittiOdometry(int argc, char** argv)
 			{"seq", "NN", "sequence number as in the folder name, e.g. 06", true},
 			{"out", "FILE.rawlog", "output rawlog; ground truth goes to FILE.gt.tum", true},
 			{"first", "I", "first frame (default 0)"}, {"last", "J", "last frame, inclusive (default: the last)"},
-			{"camera", "X", "camera 0..3: image_X with PX (default 0; 2 = left colour, stored grayscale)"}}),
+			{"camera", "X", "camera 0..3: image_X with PX (default: 0 grey, else 2 left colour, the first there; colour is stored grayscale)"}}),
 		"Usage: vlo-import kitti-odometry --root ROOT --seq NN --out FILE.rawlog [options]\n"
 		"Camera X (image_X, PX) + Velodyne; vehicle frame = Velodyne frame. Without velodyne/ or\n"
 		"without Tr in calib.txt the rawlog is camera-only (with a warning).");
@@ -71,7 +71,7 @@ int kittiOdometry(int argc, char** argv)
 	opt.out = cl.get("out");
 	opt.first = cl.getInt("first", 0);
 	opt.last = cl.getInt("last", -1);
-	opt.camera = static_cast<int>(cl.getInt("camera", 0));
+	if (cl.has("camera")) opt.camera = static_cast<int>(cl.getInt("camera", 0));
 	readCommon(cl, opt);
 	report(vlo::importKittiOdometry(opt));
 	return 0;
@@ -83,7 +83,7 @@ int kittiRaw(int argc, char** argv)
 		withCommonOptions({{"drive", "DIR", "drive folder holding image_0X/data and velodyne_points/data", true},
 			{"calib", "DIR", "folder holding calib_cam_to_cam.txt and calib_velo_to_cam.txt", true},
 			{"out", "FILE.rawlog", "output rawlog", true},
-			{"camera", "X", "camera 0..3 (default 2; colour images are stored grayscale)"}}),
+			{"camera", "X", "camera 0..3 (default: 0 grey, else 2 left colour, the first there; colour is stored grayscale)"}}),
 		"Usage: vlo-import kitti-raw --drive DIR --calib DIR --out FILE.rawlog [options]\n"
 		"Rectified camera X + Velodyne; projection P_rect_0X * R_rect_00 * Tr_velo_to_cam.\n"
 		"Times from image_0X/timestamps.txt and velodyne_points/timestamps.txt, else 10 Hz from 0.");
@@ -91,7 +91,7 @@ int kittiRaw(int argc, char** argv)
 	opt.drive = cl.get("drive");
 	opt.calib = cl.get("calib");
 	opt.out = cl.get("out");
-	opt.camera = static_cast<int>(cl.getInt("camera", 2));
+	if (cl.has("camera")) opt.camera = static_cast<int>(cl.getInt("camera", 0));
 	readCommon(cl, opt);
 	report(vlo::importKittiRaw(opt));
 	return 0;

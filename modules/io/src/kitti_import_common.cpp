@@ -21,6 +21,14 @@ std::string groundTruthPathFor(const std::string& rawlog_path)
 	return rawlog_path + ".gt.tum";
 }
 
+int chooseCamera(int camera, const std::string& prefix)
+{
+	if (camera != -1) return camera;
+	for (int c : {0, 2, 1, 3})
+		if (fs::is_directory(prefix + std::to_string(c))) return c;
+	return 0;
+}
+
 std::map<long, std::string> listNumberedFiles(const std::string& dir, const std::string& ext)
 {
 	std::error_code ec;

@@ -11,6 +11,10 @@
 
 namespace vlo
 {
+/// `camera` when it is 0..3; for -1 (the importers' default) the first of cameras 0 (grey), 2 (colour),
+/// 1 and 3 whose folder `<prefix><X>` exists, else 0 (whose folder's absence is then the error).
+int chooseCamera(int camera, const std::string& prefix);
+
 /// Files named "<number>.<ext>" in dir, by number. Throws InputError naming dir if it is missing
 /// or holds no such file.
 std::map<long, std::string> listNumberedFiles(const std::string& dir, const std::string& ext);

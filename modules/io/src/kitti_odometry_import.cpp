@@ -37,8 +37,9 @@ ImportSummary importKittiOdometry(const KittiOdometryImport& opt)
 	summary.rawlog = opt.out;
 	const std::string seq = (fs::path(opt.root) / "sequences" / opt.seq).string();
 	const std::string calib_path = seq + "/calib.txt", times_path = seq + "/times.txt";
-	const auto calib = readKittiOdometryCalib(calib_path, opt.camera);
-	const std::string image_dir = seq + "/image_" + std::to_string(opt.camera);
+	const int camera = chooseCamera(opt.camera, seq + "/image_");
+	const auto calib = readKittiOdometryCalib(calib_path, camera);
+	const std::string image_dir = seq + "/image_" + std::to_string(camera);
 	for (int other = 0; other < 4 && !fs::is_directory(image_dir); ++other)  // e.g. colour-only downloads
 		if (fs::is_directory(seq + "/image_" + std::to_string(other)))
 			failInput(image_dir, "directory not found (this sequence has image_" + std::to_string(other) + ": give --camera " +

@@ -26,7 +26,8 @@ std::vector<double> timesIfPresent(const std::string& path, long max_index)
 	if (!fs::exists(path)) return {};
 	auto t = readKittiRawTimestamps(path);
 	if (static_cast<long>(t.size()) <= max_index)
-		failInput(path, "has " + std::to_string(t.size()) + " lines, frame " + std::to_string(max_index) + " has none");
+		failInput(path, "has " + std::to_string(t.size()) + " lines: frames " + std::to_string(t.size()) + " to " +
+				std::to_string(max_index) + " have no time");
 	return t;
 }
 
@@ -76,11 +77,12 @@ ImportSummary importKittiRaw(const KittiRawImport& opt)
 	const auto start = SteadyClock::now();
 	ImportSummary summary;
 	summary.rawlog = opt.out;
-	if (opt.camera < 0 || opt.camera > 3) failInput("--camera", "must be 0, 1, 2 or 3");
-	const std::string X = "0" + std::to_string(opt.camera);
+	const int camera = chooseCamera(opt.camera, (fs::path(opt.drive) / "image_0").string());
+	if (camera < 0 || camera > 3) failInput("--camera", "must be 0, 1, 2 or 3");
+	const std::string X = "0" + std::to_string(camera);
 	const auto calib = readKittiRawCalib(
 		(fs::path(opt.calib) / "calib_cam_to_cam.txt").string(), (fs::path(opt.calib) / "calib_velo_to_cam.txt").string(),
-		opt.camera);
+		camera);
 	const std::string cam_dir = (fs::path(opt.drive) / ("image_" + X)).string();
 	const std::string velo_dir = (fs::path(opt.drive) / "velodyne_points").string();
 	const auto images = listNumberedFiles(cam_dir + "/data", "png");

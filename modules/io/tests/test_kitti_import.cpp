@@ -171,7 +171,7 @@ TEST(KittiOdometryImport, ColourCamera2OfEverySnippetMatchesP2TimesTr)
 	for (const std::string seq : {"00", "04", "06", "08"})
 	{
 		KittiOdometryImport opt = odometryImport(root, seq, dir + "/" + seq + ".rawlog");
-		opt.camera = 2;
+		if (seq == "00") opt.camera = 2;  // the others by default: the snippets have image_2 only
 		const auto summary = importKittiOdometry(opt);
 		EXPECT_EQ(summary.frames, 10u);
 		EXPECT_EQ(summary.scans, 10u);

@@ -21,7 +21,7 @@ struct KittiOdometryImport
 	std::string seq;  ///< "06"
 	std::string out;  ///< X.rawlog; ground truth goes to X.gt.tum
 	long first = 0, last = -1;  ///< frame range, inclusive; last < 0: to the end
-	int camera = 0;  ///< image_<camera> with P<camera>: 0 grey, 2 colour (stored grayscale)
+	int camera = -1;  ///< image_<camera> with P<camera>: 0 grey, 2 colour (stored grayscale); -1: 0, else 2 (the first there)
 	std::string camera_label = "CAMERA", lidar_label = "LIDAR";
 };
 ImportSummary importKittiOdometry(const KittiOdometryImport& opt);
@@ -31,7 +31,7 @@ struct KittiRawImport
 	std::string drive;  ///< holds image_0X/data/*.png and velodyne_points/data/*.bin
 	std::string calib;  ///< holds calib_cam_to_cam.txt and calib_velo_to_cam.txt
 	std::string out;
-	int camera = 2;  ///< 0..3 (1 and 3 are the right-hand cameras); colour ones are stored grayscale
+	int camera = -1;  ///< 0..3 (1 and 3 are the right-hand cameras; colour stored grayscale); -1: 0, else 2 (the first there)
 	std::string camera_label = "CAMERA", lidar_label = "LIDAR";
 };
 ImportSummary importKittiRaw(const KittiRawImport& opt);

@@ -1,3 +1,4 @@
+#include <vlo/core/se3_twist.h>
 #include <vlo/core/sweep_times.h>
 
 #include <algorithm>
@@ -18,6 +19,19 @@ void setTimesFromAzimuth(PointCloud& scan, const SpinningSweep& sweep)
 	for (LidarPoint& p : scan) p.time = static_cast<float>(sweep.timeAt(std::atan2(double(p.y), double(p.x))));
 	scan.has_time = true;
 	scan.time_from_azimuth = true;
+}
+
+void moveToFrameTime(PointCloud& scan, const Eigen::Isometry3d& motion, double dt)
+{
+	if (!(dt > 0)) return;
+	const Vector6d xi = logTwist(motion) / dt;  // per second: translation, then rotation
+	const Eigen::Vector3f v = xi.head<3>().cast<float>(), w = xi.tail<3>().cast<float>();
+	for (LidarPoint& p : scan)
+	{
+		const Eigen::Vector3f q(p.x, p.y, p.z);
+		const Eigen::Vector3f moved = q + p.time * (w.cross(q) + v);
+		p.x = moved.x(), p.y = moved.y(), p.z = moved.z(), p.time = 0;
+	}
 }
 
 bool hasTimeSpread(const PointCloud& scan)

@@ -1,5 +1,6 @@
 // Point times from the azimuth of a spinning LiDAR's sweep, in closed form.
 #include <gtest/gtest.h>
+#include <vlo/core/se3_twist.h>
 #include <vlo/core/sweep_times.h>
 
 #include <cmath>
@@ -66,5 +67,31 @@ TEST(SweepTimes, OnlyTimesThatDifferLeaveSomethingToDeskew)
 	EXPECT_FALSE(hasTimeSpread(scan));  // every time 0: motion-compensated
 	scan[1].time = 0.01f;
 	EXPECT_TRUE(hasTimeSpread(scan));
+}
+}  // namespace vlo::test
+
+namespace vlo::test
+{
+TEST(SweepTimes, MovingToTheFramesTimeFollowsTheMotion)
+{
+	// 12 m/s forward and 10 deg/s left over 0.1 s: a return 20 m ahead taken 10 ms before the frame's
+	// time, when the sensor was 0.12 m behind, lies 19.88 m ahead of it at the frame's time.
+	Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
+	motion.linear() = Eigen::AngleAxisd(1.0 * M_PI / 180, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+	motion.translation() = Eigen::Vector3d(1.2, 0.0, 0.0);
+	PointCloud scan;
+	scan.push_back(LidarPoint{20.0f, 0.0f, 0.0f, 0.0f, -0.01f});
+	scan.push_back(LidarPoint{0.0f, 10.0f, 0.0f, 0.0f, 0.0f});
+	scan.has_time = true;
+	const PointCloud taken = scan;
+	moveToFrameTime(scan, motion, 0.1);
+	for (std::size_t i = 0; i < scan.size(); ++i)
+	{
+		const Eigen::Vector3d want = expTwist(taken[i].time / 0.1 * logTwist(motion)) *
+			Eigen::Vector3d(taken[i].x, taken[i].y, taken[i].z);
+		EXPECT_LT((Eigen::Vector3d(scan[i].x, scan[i].y, scan[i].z) - want).norm(), 2e-4) << i;
+		EXPECT_EQ(scan[i].time, 0.0f);
+	}
+	EXPECT_NEAR(scan[0].x, 19.88f, 1e-3f);
 }
 }  // namespace vlo::test

@@ -2,6 +2,7 @@
 // frame, the estimate from C(i-1), L(i-1), C(i) and the VO's camera motion, the policy's decision,
 // the rescaling through the caller, the scale_* columns of frames.csv, and its snapshots.
 #include <vlo/core/bounded_sample.h>
+#include <vlo/core/sweep_times.h>
 #include <vlo/kernel/scale_correction.h>
 #include <vlo/scale/overlay.h>
 #include <vlo/scale/policy.h>
@@ -51,7 +52,10 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 			return applied;
 		}
 		// The estimator wants T_{C(i-1)}^{C(i)}; the VO gives the current camera in the previous one.
-		const scale::ScaleEstimate e = corrector_->estimate(*prev, cur, vo.camera_motion->inverse(), &pyramid_);
+		// Once the map is metric its units are metres; before, the estimate itself says how long one is.
+		const bool metric = cumulative_ >= 0;
+		scale::ScaleEstimate e = estimateAt(*prev, cur, *vo.camera_motion, metric ? 1.0 : std::nan(""));
+		if (!metric && e.valid && hasTimeSpread(prev->scan)) e = estimateAt(*prev, cur, *vo.camera_motion, e.scale);
 		++estimates_;
 		valid_ += e.valid ? 1 : 0;
 		const scale::ScaleDecision d = policy_->decide(e);
@@ -116,6 +120,22 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 	}
 
    private:
+	/// The estimate with L(i-1) as C(i-1) saw it: a raw sweep's returns moved to the image's time
+	/// along the VO's motion, `metres_per_unit` of it (NaN: unknown, the sweep as it is). At 12 m/s
+	/// the returns ahead were taken 0.13 m behind the image's viewpoint (KITTI: the scan's stamp is
+	/// 10.5 ms before the camera's), which makes their depths, and the scale, 1-2 % long.
+	scale::ScaleEstimate estimateAt(const Frame& prev, const Frame& cur, const Eigen::Isometry3d& camera_motion, double metres_per_unit)
+	{
+		if (std::isnan(metres_per_unit) || !hasTimeSpread(prev.scan))
+			return corrector_->estimate(prev, cur, camera_motion.inverse(), &pyramid_);
+		Eigen::Isometry3d m = camera_motion;
+		m.translation() *= metres_per_unit;
+		const Eigen::Isometry3d T_cl = prev.rig.camera_T_lidar();
+		PointCloud at_image = prev.scan;
+		moveToFrameTime(at_image, T_cl.inverse() * m * T_cl, cur.t - prev.t);
+		return corrector_->estimate(prev, cur, camera_motion.inverse(), &pyramid_, &at_image);
+	}
+
 	void writeColumns(
 		const scale::ScaleEstimate& e, const std::string& decision, const ScaleApplied& applied, FrameTable& table) const
 	{

@@ -35,8 +35,8 @@ bool finitePose(const Eigen::Isometry3d& T) { return T.matrix().allFinite(); }
 
 ScaleCorrector::ScaleCorrector(const ScaleOptions& opt) : opt_(opt) { opt_.validate(); }
 
-ScaleEstimate ScaleCorrector::estimate(
-	const Frame& prev, const Frame& cur, const Eigen::Isometry3d& cur_T_prev, PyramidReuse* reuse) const
+ScaleEstimate ScaleCorrector::estimate(const Frame& prev, const Frame& cur, const Eigen::Isometry3d& cur_T_prev,
+	PyramidReuse* reuse, const PointCloud* prev_scan) const
 {
 	if (!prev.has_image || !cur.has_image || !prev.has_scan)
 		failInput("scale corrector", "needs the image and scan of C(i-1) and the image of C(i)");
@@ -44,7 +44,7 @@ ScaleEstimate ScaleCorrector::estimate(
 		failInput("scale corrector", "the sensor rig needs a camera and a LiDAR");
 	const bool have_prev = reuse && reuse->frame == prev.index && !reuse->pyramid.empty();
 	LkPyramid cur_pyramid;
-	const ScaleEstimate e = estimate(prev.image.asCvMatRef(), prev.scan, cur.image.asCvMatRef(), prev.rig.camera,
+	const ScaleEstimate e = estimate(prev.image.asCvMatRef(), prev_scan ? *prev_scan : prev.scan, cur.image.asCvMatRef(), prev.rig.camera,
 		prev.rig.camera_T_lidar(), cur_T_prev, have_prev ? &reuse->pyramid : nullptr, reuse ? &cur_pyramid : nullptr);
 	if (reuse) *reuse = {cur.index, std::move(cur_pyramid)};
 	return e;

@@ -38,9 +38,10 @@ class ScaleCorrector
 		const PinholeCamera& cam, const Eigen::Isometry3d& camera_T_lidar, const Eigen::Isometry3d& cur_T_prev) const;
 
 	/// Same, from two frames of the pipeline (rig and image of `prev`, image of `cur`). With `reuse`,
-	/// prev's pyramid is taken from it when it holds prev's, and cur's is left in it.
+	/// prev's pyramid is taken from it when it holds prev's, and cur's is left in it. `prev_scan`, when
+	/// given, stands for prev.scan (the sweep moved to the image's time).
 	ScaleEstimate estimate(const Frame& prev, const Frame& cur, const Eigen::Isometry3d& cur_T_prev,
-		PyramidReuse* reuse = nullptr) const;
+		PyramidReuse* reuse = nullptr, const PointCloud* prev_scan = nullptr) const;
 
    private:
 	ScaleEstimate estimate(const cv::Mat& prev, const PointCloud& prevScan, const cv::Mat& cur, const PinholeCamera& cam,

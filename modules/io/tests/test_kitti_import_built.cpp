@@ -114,9 +114,13 @@ TEST(KittiOdometryBuilt, BadInputFailsNamingTheFileAndLeavesNoOutput)
 	fs::rename(seq + "/image_0", seq + "/image_x");
 	expectInputError([&] { importKittiOdometry(opt); }, {seq + "/image_0", "directory not found"});
 	expectNoOutput(root);
-	// Issue 34, defect 8: colour-only data (image_2) got no hint about --camera.
+	// Issue 34, defect 8: colour-only data (image_2) got no hint about --camera. By default it is now
+	// imported from camera 2 (whose P2 this calib.txt lacks); camera 0 asked for gets the hint.
 	fs::rename(seq + "/image_x", seq + "/image_2");
-	expectInputError([&] { importKittiOdometry(opt); }, {seq + "/image_0: directory not found (this sequence has image_2: give --camera 2)"});
+	expectInputError([&] { importKittiOdometry(opt); }, {seq + "/calib.txt", "missing key 'P2'"});
+	KittiOdometryImport grey = opt;
+	grey.camera = 0;
+	expectInputError([&] { importKittiOdometry(grey); }, {seq + "/image_0: directory not found (this sequence has image_2: give --camera 2)"});
 	fs::rename(seq + "/image_2", seq + "/image_0");
 
 	// NaN points are dropped with a warning naming the file, not an error.

@@ -181,7 +181,11 @@ LidarOdometryResult LidarOdometry::process(
 	// The first sweep had no motion to be deskewed with: the second brings one (constant velocity),
 	// so in each of its passes the map and the reference restart from the first sweep deskewed.
 	const bool redo_first = undistort && first_raw_ && frames_ == 1;
-	if (const auto cv = prior_->setAside()) checkExternalGuess(raw, *cv, r);
+	if (const auto cv = prior_->setAside())
+	{
+		checkExternalGuess(raw, *cv, r);
+		r.ms.add("mapping", lapMs(t0));  // lookups in the map
+	}
 	if (frames_ == 1 && r.prior_source != "external" && opt_.odometry.enabled && odometry_.hasReference() &&
 		opt_.odometry.cold_start_range > 0)
 	{

@@ -63,11 +63,6 @@ RunConfig RunConfig::fromString(const std::string& ini, const std::string& origi
 	return cfg;
 }
 
-void RunConfig::setDefault(const std::string& section, const std::string& key, const std::string& value)
-{
-	if (!user_.keyExists(section, key)) user_.write(section, key, value);
-}
-
 std::string RunConfig::where(const std::string& section, const std::string& key) const
 {
 	const auto set = overrides_.find({section, key});

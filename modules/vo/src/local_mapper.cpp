@@ -35,7 +35,6 @@ MappingStats LocalMapper::process(KeyFrame* kf, long due_frame, bool threaded)
 		cullAround(kf, st);
 		st.ms.add("other", lapMs(t));
 	}
-	stats_ = st;
 	return st;
 }
 
@@ -50,9 +49,6 @@ MappingStats LocalMapper::finish()
 	cullAround(job_kf_, st);
 	job_kf_ = nullptr;
 	st.ms.add("other", lapMs(t));
-	stats_.ba = st.ba;
-	stats_.culled_keyframes = st.culled_keyframes;
-	stats_.dropped_keyframes = st.dropped_keyframes;
 	return st;
 }
 

@@ -30,7 +30,6 @@ class VoxelMap
 	std::size_t voxelCount() const { return voxels_.size(); }
 	std::size_t pointCount() const;
 	Points points() const;
-	double voxelSize() const { return voxel_size_; }
 
    private:
 	double voxel_size_, radius_, min_spacing2_;

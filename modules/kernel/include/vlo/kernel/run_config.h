@@ -25,9 +25,6 @@ class RunConfig
 	static RunConfig fromString(const std::string& ini, const std::string& origin = "<memory>",
 		const std::vector<std::string>& overrides = {});
 
-	/// Gives `section.key` the value `value` unless the file or an override sets it: a default that
-	/// depends on another option (e.g. the LOAM prior source in mode vlo).
-	void setDefault(const std::string& section, const std::string& key, const std::string& value);
 	/// Loads `opts` from `section` (defaults where absent): types, ranges and relations, in one place.
 	void load(OptionSet& opts, const std::string& section);
 	/// Throws InputError naming the first section or key that no load() consumed, and the nearest known

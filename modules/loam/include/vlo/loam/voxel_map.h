@@ -36,7 +36,6 @@ class VoxelMap
 
 	std::size_t numPoints() const { return n_points_; }
 	std::size_t numVoxels() const { return index_.size(); }
-	double voxelSize() const { return size_; }
 	void appendPoints(std::vector<Eigen::Vector3f>& out) const;
 
    private:

@@ -45,9 +45,6 @@ class LocalMapper
 	/// Applies the pending bundle adjustment (waiting for it) and culls redundant keyframes around
 	/// its keyframe. Stats of the BA and the culling; times under "ba" and "other".
 	MappingStats finish();
-	const MappingStats& lastStats() const { return stats_; }
-	/// Registers points made elsewhere (map initialisation) for the young-point culling.
-	void addRecent(MapPoint* mp) { recent_.push_back(mp); }
 	/// The window of the last local bundle adjustment (bad keyframes dropped on scrub()).
 	const BundleWindow& window() const { return window_; }
 	void setWindow(BundleWindow w) { window_ = std::move(w); }
@@ -71,7 +68,6 @@ class LocalMapper
 	MatchContext ctx_;
 	std::vector<MapPoint*> recent_;
 	BundleWindow window_;
-	MappingStats stats_;
 	std::unique_ptr<BundleJob> job_;
 	KeyFrame* job_kf_ = nullptr;
 };

@@ -32,7 +32,6 @@ class MapInitializer
 	InitResult feed(const TrackedFrame& f);
 	void reset() { ref_.reset(); }
 	bool hasReference() const { return ref_.has_value(); }
-	long referenceIndex() const { return ref_ ? ref_->index : -1; }
 
    private:
 	void setReference(const TrackedFrame& f);

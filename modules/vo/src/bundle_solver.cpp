@@ -6,7 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
+#include <vector>
 
 #include "reprojection_error.h"
 
@@ -212,7 +212,7 @@ class Solver
 	std::vector<int> pose_slot_;  ///< per pose: its block in the reduced system, -1 if held
 	std::vector<std::size_t> obs_;  ///< the active observations
 	std::vector<std::vector<std::size_t>> point_obs_;  ///< per point: indices into obs_
-	std::deque<ReprojectionError> errors_;  ///< a deque: cost functions cannot move
+	std::vector<ReprojectionError> errors_;
 	std::vector<Linearised> lin_;
 	std::vector<Eigen::Vector3d> bl_;
 	std::vector<Eigen::Matrix3d> hll_inv_;

@@ -1,9 +1,9 @@
 #pragma once
-// Ceres residuals of a keypoint observation: pixel error over the keypoint's sigma (its pyramid
-// scale), so that the squared residual is the chi-square statistic with 2 dof. Poses are 6 doubles:
-// angle-axis then translation of Tcw. Jacobians are analytic (several times faster than automatic
-// differentiation, which dominated the local BA); tests check them against Ceres' autodiff.
-#include <ceres/ceres.h>
+// Residuals of a keypoint observation for vlo's own bundle solver: pixel error over the keypoint's
+// sigma (its pyramid scale), so that the squared residual is the chi-square statistic with 2 dof.
+// Poses are 6 doubles: angle-axis then translation of Tcw. Jacobians are analytic (several times
+// faster than automatic differentiation, which dominated the local BA); tests check them against
+// Ceres' autodiff, the only use of Ceres here (the tests link it, the library does not).
 #include <vlo/vo/geometry.h>
 
 #include <cmath>
@@ -45,7 +45,9 @@ class PoseRotations
 	std::vector<Entry> entries_;
 };
 
-class ReprojectionError : public ceres::SizedCostFunction<2, 6, 3>
+/// Ceres' cost-function interface without its base class: 2 residuals of a 6-parameter pose and a
+/// 3-parameter point.
+class ReprojectionError
 {
    public:
 	/// `rotations`: where the pose's rotation is looked up (as pose number `pose`), else computed.
@@ -54,7 +56,8 @@ class ReprojectionError : public ceres::SizedCostFunction<2, 6, 3>
 		: obs_(obs), w_(inv_sigma), c_(c), rotations_(rotations), pose_(pose)
 	{
 	}
-	bool Evaluate(double const* const* p, double* r, double** J) const override;
+	/// r[0..2); when J and J[i] are given, J[0] (2x6) and J[1] (2x3), row-major. Always true.
+	bool Evaluate(double const* const* p, double* r, double** J) const;
 
    private:
 	Vec2 obs_;

@@ -1,4 +1,5 @@
 // The analytic Jacobians of the reprojection residuals against Ceres' automatic differentiation.
+#include <ceres/autodiff_cost_function.h>
 #include <ceres/rotation.h>
 #include <gtest/gtest.h>
 

@@ -1,7 +1,8 @@
 #pragma once
 // Nonlinear least squares: pose-only optimisation of a tracked frame (core's robust pose solver),
-// and bundle adjustment with Ceres of a window of keyframes and their points, expressed in the
-// frame of the window's earliest keyframe (paper III-C) so that the window can be rescaled about it.
+// and bundle adjustment (vlo's own Levenberg-Marquardt, src/bundle_solver.h) of a window of
+// keyframes and their points, expressed in the frame of the window's earliest keyframe (paper
+// III-C) so that the window can be rescaled about it.
 #include <vlo/vo/keyframe.h>
 #include <vlo/vo/map_point.h>
 #include <vlo/vo/tracked_frame.h>

@@ -15,19 +15,17 @@ namespace vlo::scale
 {
 namespace
 {
-cv::Mat toGrey(const cv::Mat& m, const PinholeCamera& cam, const char* which)
+/// Frames' images are grey already (io converts them as it reads): one conversion, not one per user.
+const cv::Mat& checkedGrey(const cv::Mat& m, const PinholeCamera& cam, const char* which)
 {
 	const std::string where = std::string("scale corrector: image ") + which;
 	if (m.empty()) failInput(where, "is empty");
-	if (m.depth() != CV_8U) failInput(where, "is not 8-bit");
+	if (m.depth() != CV_8U || m.channels() != 1)
+		failInput(where, "is not 8-bit grey (" + std::to_string(m.channels()) + " channels)");
 	if (m.cols != cam.width || m.rows != cam.height)
 		failInput(where, "is " + std::to_string(m.cols) + "x" + std::to_string(m.rows) + " but the camera is " +
 				std::to_string(cam.width) + "x" + std::to_string(cam.height));
-	if (m.channels() == 1) return m;
-	if (m.channels() != 3) failInput(where, "has " + std::to_string(m.channels()) + " channels");
-	cv::Mat g;
-	cv::cvtColor(m, g, cv::COLOR_BGR2GRAY);
-	return g;
+	return m;
 }
 
 bool finitePose(const Eigen::Isometry3d& T) { return T.matrix().allFinite(); }
@@ -68,7 +66,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 		e.valid = r == Reason::Ok;
 		return e;
 	};
-	const cv::Mat prev = toGrey(prevIn, cam, "C(i-1)"), cur = toGrey(curIn, cam, "C(i)");
+	const cv::Mat &prev = checkedGrey(prevIn, cam, "C(i-1)"), &cur = checkedGrey(curIn, cam, "C(i)");
 	if (!finitePose(cur_T_prev) || !finitePose(camera_T_lidar)) return finish(Reason::BadPose);
 	const size_t minN = static_cast<size_t>(opt_.min_inliers);
 

@@ -1,6 +1,5 @@
 // The ORB-SLAM2-style monocular VO of modules/vo as the visual odometry module "orb". Camera poses
 // become vehicle poses through the rig's vehicle_T_camera.
-#include <opencv2/imgproc.hpp>
 #include <vlo/core/error.h>
 #include <vlo/kernel/visual_odometry.h>
 #include <vlo/vo/visual_odometry.h>
@@ -29,9 +28,7 @@ class OrbVoModule : public MonocularVisualOdometry
 			vo_->useMappingThread(threads_ >= 2);
 			vehicle_T_camera_ = frame.rig.vehicle_T_camera;
 		}
-		cv::Mat gray = frame.image.asCvMatRef();
-		if (gray.channels() == 3) cv::cvtColor(gray, gray, cv::COLOR_BGR2GRAY);
-		const vo::VoFrameInfo info = vo_->process(gray, frame.t);
+		const vo::VoFrameInfo info = vo_->process(frame.image.asCvMatRef(), frame.t);  // grey already
 
 		table.set("vo_state", std::string(vo::toString(info.state)));
 		table.set("vo_reason", info.reason);

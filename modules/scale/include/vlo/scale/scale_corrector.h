@@ -29,7 +29,7 @@ class ScaleCorrector
 	explicit ScaleCorrector(const ScaleOptions& opt = {});
 	const ScaleOptions& options() const { return opt_; }
 
-	/// `prev` = C(i-1), `cur` = C(i): 8-bit grey or BGR images of the camera's size. `prevScan` = L(i-1)
+	/// `prev` = C(i-1), `cur` = C(i): 8-bit grey images of the camera's size. `prevScan` = L(i-1)
 	/// in the LiDAR frame, `camera_T_lidar` maps it into the camera optical frame. `cur_T_prev` =
 	/// T_{C(i-1)}^{C(i)} from the VO (X_i = R X_{i-1} + t, t in VO units). The result's scale s
 	/// multiplies VO lengths into metres: if the VO translation is k times too short, s = 1/k.

@@ -51,7 +51,7 @@ bool drive(bool hdl)
 		est.push_back(r.pose);
 		gt.push_back(T0.inverse() * truth);
 		if (i == 0) continue;
-		bad += r.status != FrameStatus::Ok;
+		bad += r.status != LidarFrameStatus::Ok;
 		degenerate += r.mapping.degeneracy.degenerate;
 		ms += r.ms.total() / (n - 1);
 		ms_max = std::max(ms_max, r.ms.total());

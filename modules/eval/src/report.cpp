@@ -1,4 +1,5 @@
 #include <vlo/core/atomic_file.h>
+#include <vlo/core/units.h>
 #include <vlo/eval/report.h>
 
 #include <nlohmann/json.hpp>
@@ -13,8 +14,6 @@ namespace vlo
 {
 namespace
 {
-constexpr double kDeg = 180.0 / M_PI;
-
 /// Absent or not finite: null.
 nlohmann::ordered_json num(std::optional<double> v)
 {
@@ -44,7 +43,7 @@ struct KittiNumbers
 KittiNumbers kittiNumbers(const EvalReport& r)
 {
 	if (!r.kitti || r.kitti->empty()) return {};
-	return {100 * r.kitti->t_err, kDeg * r.kitti->r_err, 100 * kDeg * r.kitti->r_err};
+	return {100 * r.kitti->t_err, kDegPerRad * r.kitti->r_err, 100 * kDegPerRad * r.kitti->r_err};
 }
 }  // namespace
 
@@ -63,7 +62,7 @@ std::string toJson(const EvalReport& r)
 	if (r.kitti)
 		for (const auto& s : r.kitti->per_length)
 			perLength.push_back({{"length_m", num(s.length)}, {"segments", s.n}, {"t_err_pct", num(100 * s.t_err)},
-				{"r_err_deg_per_m", num(kDeg * s.r_err)}, {"r_err_deg_per_100m", num(100 * kDeg * s.r_err)}});
+				{"r_err_deg_per_m", num(kDegPerRad * s.r_err)}, {"r_err_deg_per_100m", num(100 * kDegPerRad * s.r_err)}});
 	std::optional<double> rt, rr, rx, ry, rz, cvt, cvr;
 	if (r.rpe)
 	{
@@ -132,7 +131,7 @@ std::string formatTable(const EvalReport& r)
 		o << "\n  length [m]  segments  t_err [%]  r_err [deg/100m]\n";
 		for (const auto& s : r.kitti->per_length)
 			o << fmt("  %10.0f", s.length) << fmt("  %8.0f", static_cast<double>(s.n)) << fmt("  %9.4f", 100 * s.t_err)
-			  << fmt("  %16.4f", 100 * kDeg * s.r_err) << "\n";
+			  << fmt("  %16.4f", 100 * kDegPerRad * s.r_err) << "\n";
 	}
 	else
 		row("KITTI t_err / r_err", "n/a: " + r.kitti_note);

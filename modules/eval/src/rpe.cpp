@@ -1,4 +1,5 @@
 #include <vlo/core/se3.h>
+#include <vlo/core/units.h>
 #include <vlo/eval/rpe.h>
 
 #include <cmath>
@@ -7,7 +8,6 @@ namespace vlo
 {
 RpeResult computeRpe(const Trajectory& gt, const Trajectory& est)
 {
-	constexpr double kDeg = 180.0 / M_PI;
 	RpeResult r;
 	double t2 = 0, r2 = 0, cvt2 = 0, cvr2 = 0;
 	Eigen::Vector3d axes2 = Eigen::Vector3d::Zero();
@@ -18,14 +18,14 @@ RpeResult computeRpe(const Trajectory& gt, const Trajectory& est)
 		const Eigen::Isometry3d e = g.inverse() * (est[i].pose.inverse() * est[i + 1].pose);
 		t2 += e.translation().squaredNorm();
 		axes2 += e.translation().cwiseAbs2();
-		r2 += std::pow(kDeg * rotationAngle(e.linear()), 2);
+		r2 += std::pow(kDegPerRad * rotationAngle(e.linear()), 2);
 		++r.n;
 		if (i + 2 < gt.size())
 		{
 			const Eigen::Isometry3d next = gt[i + 1].pose.inverse() * gt[i + 2].pose;
 			const Eigen::Isometry3d miss = next.inverse() * g;
 			cvt2 += miss.translation().squaredNorm();
-			cvr2 += std::pow(kDeg * rotationAngle(miss.linear()), 2);
+			cvr2 += std::pow(kDegPerRad * rotationAngle(miss.linear()), 2);
 			++n_cv;
 		}
 	}

@@ -21,7 +21,7 @@ class IcpModule : public LidarOdometryModule
 		mount_.observe(frame);
 		const auto r = odometry_->process(frame.t, frame.scan, mount_.lidarMotion(vehicle_motion));
 
-		table.set("lo_status", std::string(icp::toString(r.status)));
+		table.set("lo_status", std::string(toString(r.status)));
 		table.set("lo_prior", r.prediction);
 		table.set("lo_points", static_cast<long long>(r.n_valid));
 		table.set("lo_icp_source", static_cast<long long>(r.n_source));

@@ -5,12 +5,7 @@
 
 namespace vlo::icp
 {
-Eigen::Isometry3d scaleMotion(const Eigen::Isometry3d& motion, double s)
-{
-	return expTwist(s * logTwist(motion));
-}
-
-Points deskew(const PointCloud& scan, const Eigen::Isometry3d& motion, double dt)
+Points deskewExact(const PointCloud& scan, const Eigen::Isometry3d& motion, double dt)
 {
 	Points out;
 	out.reserve(scan.size());

@@ -8,17 +8,6 @@
 
 namespace vlo::icp
 {
-const char* toString(FrameStatus s)
-{
-	switch (s)
-	{
-		case FrameStatus::Ok: return "ok";
-		case FrameStatus::Initialized: return "initialized";
-		case FrameStatus::Skipped: break;
-	}
-	return "skipped";
-}
-
 namespace
 {
 const IcpOptions& validated(const IcpOptions& o)
@@ -54,7 +43,7 @@ IcpResult IcpOdometry::process(double t, const PointCloud& scan, const std::opti
 	r.deskewed = started_ && hasTimeSpread(scan);
 	// KISS-ICP keeps the scan at half the voxel size for the map and registers a coarser subset.
 	const Points frame = voxelDownsample(
-		cropRange(deskew(scan, motion, t - last_t_), opt_.min_range, opt_.max_range), 0.5 * opt_.voxel_size);
+		cropRange(deskewExact(scan, motion, t - last_t_), opt_.min_range, opt_.max_range), 0.5 * opt_.voxel_size);
 	const Points source = voxelDownsample(frame, 1.5 * opt_.voxel_size);
 	r.n_valid = frame.size();
 	r.n_source = source.size();
@@ -65,7 +54,7 @@ IcpResult IcpOdometry::process(double t, const PointCloud& scan, const std::opti
 	if (source.empty())
 		r.reason = "no point within [" + std::to_string(opt_.min_range) + ", " + std::to_string(opt_.max_range) + "] m";
 	else if (!started_ || map_.empty())
-		r.status = FrameStatus::Initialized;
+		r.status = LidarFrameStatus::Initialized;
 	else
 	{
 		RegistrationParams params;
@@ -81,24 +70,24 @@ IcpResult IcpOdometry::process(double t, const PointCloud& scan, const std::opti
 				std::to_string(params.max_distance) + " m";
 		else
 		{
-			r.status = FrameStatus::Ok;
+			r.status = LidarFrameStatus::Ok;
 			r.pose = r.registration.pose;
 		}
 	}
 	r.ms.add("mapping", lapMs(clock));
 
-	if (r.status != FrameStatus::Skipped)
+	if (r.status != LidarFrameStatus::Skipped)
 	{
 		const Eigen::Isometry3d deviation = predicted.inverse() * r.pose;
 		r.model_error = threshold_.modelError(deviation);
-		if (r.status == FrameStatus::Ok) threshold_.addDeviation(deviation);
+		if (r.status == LidarFrameStatus::Ok) threshold_.addDeviation(deviation);
 		map_.update(frame, r.pose);
 	}
 	r.motion = pose_.inverse() * r.pose;
 	if (started_) velocity_ = r.motion;
 	pose_ = r.pose;
 	last_t_ = t;
-	started_ = started_ || r.status != FrameStatus::Skipped;
+	started_ = started_ || r.status != LidarFrameStatus::Skipped;
 	r.map_points = map_.pointCount();
 	r.ms.add("mapping", lapMs(clock));
 	return r;

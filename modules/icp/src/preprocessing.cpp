@@ -19,7 +19,7 @@ Points cropRange(const Points& points, double min_range, double max_range)
 
 Points voxelDownsample(const Points& points, double voxel_size)
 {
-	std::unordered_set<Voxel, VoxelHash> seen;
+	std::unordered_set<Voxel, VoxelHasher> seen;
 	seen.reserve(points.size());
 	Points kept;
 	kept.reserve(points.size());

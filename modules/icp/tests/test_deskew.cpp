@@ -1,6 +1,7 @@
 // Deskew of synthetically skewed sweeps: each point captured in the sensor frame of its own instant
 // under a constant-velocity motion, then moved back into the frame's sensor frame.
 #include <gtest/gtest.h>
+#include <vlo/core/se3_twist.h>
 #include <vlo/core/sweep_times.h>
 #include <vlo/icp/deskew.h>
 
@@ -18,7 +19,7 @@ const Eigen::Isometry3d kMotion = motion(1.2, 0.05, 0.0, 4.0, 0.3, 0.0);
 constexpr double kDt = 0.1;
 
 // The true scan (sensor frame at the frame time) and its skewed capture: a point fired at time tau
-// lies in the sensor frame of t + tau, which is scaleMotion(kMotion, tau / dt) in the frame's own.
+// lies in the sensor frame of t + tau, which is exp(tau / dt log(kMotion)) in the frame's own.
 struct Skewed
 {
 	Points truth;
@@ -32,7 +33,7 @@ Skewed skewedSweep(bool with_times)
 	for (const auto& p : straight)
 	{
 		const double tau = SpinningSweep{}.timeAt(std::atan2(p.y, p.x));  // KISS-ICP's rule, KITTI's sweep
-		const Eigen::Vector3d v = scaleMotion(kMotion, tau / kDt).inverse() * Eigen::Vector3d(p.x, p.y, p.z);
+		const Eigen::Vector3d v = expTwist(tau / kDt * logTwist(kMotion)).inverse() * Eigen::Vector3d(p.x, p.y, p.z);
 		s.truth.emplace_back(p.x, p.y, p.z);
 		s.scan.push_back(LidarPoint{float(v.x()), float(v.y()), float(v.z()), 0.f, float(tau)});
 	}
@@ -48,21 +49,23 @@ double maxError(const Points& a, const Points& b)
 }
 }  // namespace
 
-TEST(Deskew, ScaleMotionInterpolatesAndExtrapolates)
+// The constant twist the deskew follows: the fraction s of kMotion, for s in and beyond [0, 1].
+TEST(Deskew, ConstantTwistInterpolatesAndExtrapolates)
 {
-	EXPECT_TRUE(scaleMotion(kMotion, 1.0).isApprox(kMotion, 1e-12));
-	EXPECT_TRUE(scaleMotion(kMotion, 0.0).isApprox(Eigen::Isometry3d::Identity()));
-	EXPECT_TRUE((scaleMotion(kMotion, 0.5) * scaleMotion(kMotion, 0.5)).isApprox(kMotion, 1e-12));
-	EXPECT_TRUE((scaleMotion(kMotion, -0.25) * scaleMotion(kMotion, 1.25)).isApprox(kMotion, 1e-12));
-	EXPECT_NEAR(rotationDeg(scaleMotion(kMotion, -0.5)), 0.5 * rotationDeg(kMotion), 1e-9);
+	const auto part = [](double s) { return expTwist(s * logTwist(kMotion)); };
+	EXPECT_TRUE(part(1.0).isApprox(kMotion, 1e-12));
+	EXPECT_TRUE(part(0.0).isApprox(Eigen::Isometry3d::Identity()));
+	EXPECT_TRUE((part(0.5) * part(0.5)).isApprox(kMotion, 1e-12));
+	EXPECT_TRUE((part(-0.25) * part(1.25)).isApprox(kMotion, 1e-12));
+	EXPECT_NEAR(rotationDeg(part(-0.5)), 0.5 * rotationDeg(kMotion), 1e-9);
 }
 
 TEST(Deskew, PerPointTimesUndoTheSkewExactly)
 {
 	const Skewed s = skewedSweep(true);
-	const Points raw = deskew(skewedSweep(false).scan, kMotion, kDt);
+	const Points raw = deskewExact(skewedSweep(false).scan, kMotion, kDt);
 	EXPECT_GT(maxError(raw, s.truth), 0.5);  // what is at stake: a scan without times is taken as it is
-	EXPECT_LT(maxError(deskew(s.scan, kMotion, kDt), s.truth), 1e-4);  // float storage
+	EXPECT_LT(maxError(deskewExact(s.scan, kMotion, kDt), s.truth), 1e-4);  // float storage
 }
 
 TEST(Deskew, AzimuthTimesUndoTheSkewToMillimetres)
@@ -75,13 +78,13 @@ TEST(Deskew, AzimuthTimesUndoTheSkewToMillimetres)
 	const Skewed s = skewedSweep(false);
 	PointCloud timed = s.scan;
 	setTimesFromAzimuth(timed, SpinningSweep{});
-	const Points fixed = deskew(timed, kMotion, kDt);
+	const Points fixed = deskewExact(timed, kMotion, kDt);
 	std::vector<double> err;
 	for (std::size_t i = 0; i < fixed.size(); ++i) err.push_back((fixed[i] - s.truth[i]).norm());
 	std::sort(err.begin(), err.end());
 	EXPECT_LT(err[err.size() / 2], 0.005);
 	EXPECT_LT(err[err.size() * 99 / 100], 0.05);
-	const Points raw = deskew(s.scan, kMotion, kDt);
+	const Points raw = deskewExact(s.scan, kMotion, kDt);
 	std::vector<double> rawErr;
 	for (std::size_t i = 0; i < raw.size(); ++i) rawErr.push_back((raw[i] - s.truth[i]).norm());
 	std::sort(rawErr.begin(), rawErr.end());

@@ -78,7 +78,7 @@ SequenceError runSequence(const fs::path& root, const std::string& seq)
 		char name[32];
 		std::snprintf(name, sizeof name, "%06d.bin", i);
 		const IcpResult r = odo.process(0.1 * i, readBin(root / "sequences" / seq / "velodyne" / name), std::nullopt);
-		EXPECT_EQ(r.status, i == 0 ? FrameStatus::Initialized : FrameStatus::Ok) << seq << " " << i << r.reason;
+		EXPECT_EQ(r.status, i == 0 ? LidarFrameStatus::Initialized : LidarFrameStatus::Ok) << seq << " " << i << r.reason;
 		const Eigen::Isometry3d gt = Tr.inverse() * fromRow(poses) * Tr;  // the Velodyne's pose
 		if (i > 0)
 		{

@@ -58,7 +58,7 @@ TEST(IcpOdometry, FollowsADriveThroughTheStreet)
 	for (int i = 0; i < 5; ++i)
 	{
 		const IcpResult r = odo.process(0.1 * i, scanFrom(streetScene(120000, 10 + i), world_T_sensor), std::nullopt);
-		EXPECT_EQ(r.status, i == 0 ? FrameStatus::Initialized : FrameStatus::Ok) << r.reason;
+		EXPECT_EQ(r.status, i == 0 ? LidarFrameStatus::Initialized : LidarFrameStatus::Ok) << r.reason;
 		const Eigen::Isometry3d err = world_T_sensor.inverse() * r.pose;
 		EXPECT_LT(err.translation().norm(), 0.03) << "frame " << i;
 		EXPECT_LT(rotationDeg(err), 0.05) << "frame " << i;
@@ -85,7 +85,7 @@ TEST(IcpOdometry, AnEmptyScanIsSkippedOnThePrediction)
 {
 	IcpOdometry odo{IcpOptions{}};
 	const IcpResult r = odo.process(0.0, PointCloud{}, std::nullopt);
-	EXPECT_EQ(r.status, FrameStatus::Skipped);
+	EXPECT_EQ(r.status, LidarFrameStatus::Skipped);
 	EXPECT_NE(r.reason.find("no point"), std::string::npos);
 }
 }  // namespace vlo::icp::test

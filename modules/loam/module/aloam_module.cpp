@@ -37,7 +37,7 @@ class AloamModule : public LidarOdometryModule
 		const auto* ahead = std::any_cast<std::shared_ptr<loam::ScanFeatures>>(&frame.lidar_prepared);
 		const auto r = ahead && *ahead ? lo_->process(frame.t, std::move(**ahead), motion) : lo_->process(frame.t, frame.scan, motion);
 
-		table.set("lo_status", std::string(loam::toString(r.status)));
+		table.set("lo_status", std::string(toString(r.status)));
 		table.set("lo_prior", r.prior_source);
 		table.set("lo_guess_stage", r.external_stage);
 		table.set("lo_guess_fit_external", r.guess_fit_external, 1);

@@ -8,22 +8,13 @@
 
 namespace vlo::loam
 {
-Eigen::Isometry3d scaleMotion(const Eigen::Isometry3d& motion, double a)
-{
-	Eigen::AngleAxisd aa(motion.rotation());
-	Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
-	out.linear() = Eigen::AngleAxisd(aa.angle() * a, aa.axis()).toRotationMatrix();
-	out.translation() = motion.translation() * a;
-	return out;
-}
-
-void deskew(ScanPoints& points, const Eigen::Isometry3d& motion, double dt)
+void deskewTabulated(ScanPoints& points, const Eigen::Isometry3d& motion, double dt)
 {
 	// Exact transforms at 1024 time steps over the points' times, one trig evaluation per step, not
 	// per point. Each point blends the two steps around its time: the nearest step alone was off by
 	// up to 1/2048 of the span's motion (0.9 mm at 1.2 m per sweep); blended, the error is second
 	// order in the step (micrometres).
-	// Constant twist, not A-LOAM's scaled angle and chord (scaleMotion): in a turn the sensor moves on
+	// Constant twist, not A-LOAM's scaled angle and chord (as the motion prior's): in a turn the sensor moves on
 	// an arc, and the chord puts both ends of the sweep off it to the same side.
 	constexpr int kSteps = 1024;
 	if (points.empty() || !(dt > 0)) return;

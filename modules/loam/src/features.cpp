@@ -1,7 +1,7 @@
 #include "vlo/loam/features.h"
 
 #include <vlo/loam/rings.h>
-#include <vlo/core/voxel_hash.h>
+#include <vlo/core/voxel_hash_map.h>
 
 #include <algorithm>
 #include <cmath>

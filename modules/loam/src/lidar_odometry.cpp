@@ -8,18 +8,6 @@
 
 namespace vlo::loam
 {
-const char* toString(FrameStatus s)
-{
-	switch (s)
-	{
-		case FrameStatus::Ok: return "ok";
-		case FrameStatus::Initialized: return "initialized";
-		case FrameStatus::Degraded: return "degraded";
-		case FrameStatus::Skipped: return "skipped";
-	}
-	return "?";
-}
-
 LidarOdometry::LidarOdometry(const LoamOptions& o)
 	: opt_((o.validate(), o)),
 	  features_(o),
@@ -61,7 +49,7 @@ std::vector<Eigen::Vector3f> LidarOdometry::mapPoints() const
 // Unusable input: the pose follows the prior and the reference scan and map stay as they were.
 LidarOdometryResult LidarOdometry::skip(LidarOdometryResult r, const std::string& why)
 {
-	r.status = FrameStatus::Skipped;
+	r.status = LidarFrameStatus::Skipped;
 	r.reason = why;
 	r.motion = frames_ ? r.guess : Eigen::Isometry3d::Identity();
 	r.pose = pose_ * r.motion;
@@ -117,16 +105,16 @@ void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, E
 	// Scan-to-map from the odometry pose carried into the map frame.
 	pose = map_T_odom_ * odom;
 	const bool first = (!opt_.mapping.enabled || mapper_.empty()) && (!opt_.odometry.enabled || !odometry_.hasReference());
-	r.status = first ? FrameStatus::Initialized : FrameStatus::Ok;
+	r.status = first ? LidarFrameStatus::Initialized : LidarFrameStatus::Ok;
 	r.reason.clear();
 	if (!first && opt_.mapping.enabled)
 	{
 		r.mapping = mapper_.align(mapper_.prepare(f), pose);
 		if (r.mapping.ok) pose = r.mapping.T_map_curr;
-		else r.status = FrameStatus::Degraded, r.reason = r.mapping.reason;
+		else r.status = LidarFrameStatus::Degraded, r.reason = r.mapping.reason;
 	}
 	else if (!first && opt_.odometry.enabled && !r.odometry.ok)
-		r.status = FrameStatus::Degraded, r.reason = r.odometry.reason;
+		r.status = LidarFrameStatus::Degraded, r.reason = r.odometry.reason;
 	r.ms.add("mapping", lapMs(t0));
 }
 
@@ -174,7 +162,7 @@ LidarOdometryResult LidarOdometry::process(
 	const bool undistort = deskewable && frames_ && t_prev_ && t > *t_prev_;
 	const auto deskewed = [&](const FeatureSet& src, const Eigen::Isometry3d& motion) {
 		FeatureSet d = src;
-		for (ScanPoints* s : {&d.sharp, &d.less_sharp, &d.flat, &d.less_flat}) deskew(*s, motion, t - *t_prev_);
+		for (ScanPoints* s : {&d.sharp, &d.less_sharp, &d.flat, &d.less_flat}) deskewTabulated(*s, motion, t - *t_prev_);
 		r.ms.add("odometry", lapMs(t0));
 		return d;
 	};

@@ -1,7 +1,6 @@
 #include "vlo/loam/motion_prior.h"
 
 #include <vlo/core/se3.h>
-#include <vlo/loam/deskew.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,20 @@
 
 namespace vlo::loam
 {
+namespace
+{
+/// motion^a on SE(3), approximated like A-LOAM: rotation angle and translation (the chord) both
+/// scaled by a. Not the constant twist of the deskews: kept as A-LOAM's, whose prior this is.
+Eigen::Isometry3d scaleAngleAndChord(const Eigen::Isometry3d& motion, double a)
+{
+	Eigen::AngleAxisd aa(motion.rotation());
+	Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
+	out.linear() = Eigen::AngleAxisd(aa.angle() * a, aa.axis()).toRotationMatrix();
+	out.translation() = motion.translation() * a;
+	return out;
+}
+}  // namespace
+
 Eigen::Isometry3d ConstantVelocityPrior::predict(double t, const std::optional<Eigen::Isometry3d>&)
 {
 	if (!t_prev_ || last_dt_ <= 0)
@@ -20,7 +33,7 @@ Eigen::Isometry3d ConstantVelocityPrior::predict(double t, const std::optional<E
 	// A dropped frame doubles the interval: scale the motion (bounded, timestamps can be odd).
 	const double ratio = std::clamp((t - *t_prev_) / last_dt_, 0.0, 3.0);
 	if (std::abs(ratio - 1.0) < 0.05) return last_;
-	return scaleMotion(last_, ratio);
+	return scaleAngleAndChord(last_, ratio);
 }
 
 void ConstantVelocityPrior::update(double t, const Eigen::Isometry3d& T_prev_curr)

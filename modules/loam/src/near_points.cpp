@@ -1,6 +1,6 @@
 #include "vlo/loam/near_points.h"
 
-#include <vlo/core/voxel_hash.h>
+#include <vlo/core/voxel_hash_map.h>
 
 namespace vlo::loam
 {

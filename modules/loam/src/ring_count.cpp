@@ -1,6 +1,7 @@
 #include "vlo/loam/ring_count.h"
 
 #include <vlo/core/error.h>
+#include <vlo/core/units.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@ namespace vlo::loam
 {
 namespace
 {
-constexpr double kDeg = 180.0 / M_PI;
 constexpr double kColumnDeg = 0.2;  // about one firing of a VLP-16, two of an HDL-64 at 10 Hz
 constexpr double kBeamGapDeg = 0.15;  // under half the finest beam spacing (HDL-64: 1/3 deg)
 constexpr double kMinRho = 2.0;  // nearer returns: each beam's own origin spreads their elevations
@@ -45,9 +45,9 @@ RingEvidence fromElevations(const PointCloud& scan)
 	{
 		const double rho = std::hypot(p.x, p.y);
 		if (!std::isfinite(rho) || !std::isfinite(p.z) || rho < kMinRho) continue;
-		const double az = std::atan2(p.y, p.x) * kDeg + 180.0;
+		const double az = std::atan2(p.y, p.x) * kDegPerRad + 180.0;
 		const int c = std::clamp(static_cast<int>(az / kColumnDeg), 0, n_columns - 1);
-		columns[c].push_back(static_cast<float>(std::atan2(p.z, rho) * kDeg));
+		columns[c].push_back(static_cast<float>(std::atan2(p.z, rho) * kDegPerRad));
 		++n;
 	}
 	RingEvidence e;

@@ -1,6 +1,7 @@
 #include "vlo/loam/rings.h"
 
 #include <vlo/core/sweep_times.h>
+#include <vlo/core/units.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,6 @@ namespace vlo::loam
 {
 namespace
 {
-constexpr double kDeg = M_PI / 180.0;
 constexpr float kMaxSecondsAway = 1.0f;  ///< a point time farther from the frame's is invalid (sweeps last 0.05-0.2 s)
 
 // Rings of a scan that carries the sensor's ids: the highest id below kMaxRings + 1, at least the
@@ -44,12 +44,12 @@ RingModel::RingModel(const ScanOptions& o)
 
 	std::vector<float> tan_bounds;  // tan of the midpoints between consecutive beams
 	for (std::size_t k = 0; k + 1 < elevations_deg_.size(); ++k)
-		tan_bounds.push_back(static_cast<float>(std::tan(0.5 * (elevations_deg_[k] + elevations_deg_[k + 1]) * kDeg)));
+		tan_bounds.push_back(static_cast<float>(std::tan(0.5 * (elevations_deg_[k] + elevations_deg_[k + 1]) * kRadPerDeg)));
 	tan_bounds_ = SliceTable(std::move(tan_bounds));
 	const double lo = std::max(-89.9, elevations_deg_.front() - o.fov_margin_deg);
 	const double hi = std::min(89.9, elevations_deg_.back() + o.fov_margin_deg);
-	tan_lo_ = static_cast<float>(std::tan(lo * kDeg));
-	tan_hi_ = static_cast<float>(std::tan(hi * kDeg));
+	tan_lo_ = static_cast<float>(std::tan(lo * kRadPerDeg));
+	tan_hi_ = static_cast<float>(std::tan(hi * kRadPerDeg));
 }
 
 int RingModel::ringOf(float z, float rho) const

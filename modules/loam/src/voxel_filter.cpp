@@ -1,6 +1,6 @@
 #include "vlo/loam/voxel_filter.h"
 
-#include <vlo/core/voxel_hash.h>
+#include <vlo/core/voxel_hash_map.h>
 
 #include <cmath>
 
@@ -10,7 +10,7 @@ std::vector<Eigen::Vector3f> voxelDownsample(const ScanPoints& points, float lea
 {
 	std::vector<Eigen::Vector3f> sum;
 	std::vector<int> count;
-	VoxelHash slot;
+	VoxelHashMap slot;
 	slot.reserve(points.size());
 	const float inv = 1.0f / leaf;
 	for (const ScanPoint& sp : points)

@@ -81,7 +81,7 @@ int VoxelMap::knn(const Eigen::Vector3f& q, int k, float max_dist, Eigen::Vector
 		const float box2 = dx * gap2.x() + dy * gap2.y() + dz * gap2.z();
 		if (box2 >= limit) continue;
 		const std::uint32_t id = index_.find(voxelKey(base + Eigen::Vector3i(dx * step.x(), dy * step.y(), dz * step.z())));
-		if (id == VoxelHash::kNone) continue;
+		if (id == VoxelHashMap::kNone) continue;
 		const Eigen::Vector3f* pts = voxels_[id].points.data();
 		const auto m = static_cast<std::uint32_t>(voxels_[id].points.size());
 		for (std::uint32_t j = 0; j < m; ++j)

@@ -59,14 +59,14 @@ TEST(BadInput, SkippedWithAReasonNeverThrown)
 	{
 		LidarOdometryResult r;
 		ASSERT_NO_THROW(r = lo.process(t += 0.1, c.pc ? *c.pc : ring, std::nullopt));
-		EXPECT_EQ(r.status, FrameStatus::Skipped);
+		EXPECT_EQ(r.status, LidarFrameStatus::Skipped);
 		EXPECT_TRUE(contains(r.reason, c.why)) << c.why << " / " << r.reason;
 		EXPECT_TRUE(r.pose.isApprox(Eigen::Isometry3d::Identity()));
 	}
 	// Features too few although rings are populated: a sparse scan of a plain.
 	World plain;
 	LidarOdometryResult r = lo.process(t += 0.1, scan(plain, vlp16(), lidarPoseAt(Path(), 0)), std::nullopt);
-	EXPECT_EQ(r.status, FrameStatus::Skipped);
+	EXPECT_EQ(r.status, LidarFrameStatus::Skipped);
 	EXPECT_TRUE(contains(r.reason, "too few") || contains(r.reason, "rings")) << r.reason;
 	EXPECT_TRUE(lo.mapPoints().empty());
 }
@@ -97,21 +97,21 @@ TEST(BadInput, TrackingResumesAfterBadFrames)
 	const Drive d;
 	LidarOdometry lo(vlp16Options());
 	// A bad first frame: the next good one starts the map at the prior's (identity) pose.
-	EXPECT_EQ(lo.process(0.0, PointCloud(), std::nullopt).status, FrameStatus::Skipped);
-	EXPECT_EQ(lo.process(0.1, d.scanAt(0), std::nullopt).status, FrameStatus::Initialized);
+	EXPECT_EQ(lo.process(0.0, PointCloud(), std::nullopt).status, LidarFrameStatus::Skipped);
+	EXPECT_EQ(lo.process(0.1, d.scanAt(0), std::nullopt).status, LidarFrameStatus::Initialized);
 	const Eigen::Isometry3d T0 = d.truth(0);
-	for (int i = 1; i <= 4; ++i) EXPECT_EQ(lo.process(0.1 + 0.1 * i, d.scanAt(i), std::nullopt).status, FrameStatus::Ok);
+	for (int i = 1; i <= 4; ++i) EXPECT_EQ(lo.process(0.1 + 0.1 * i, d.scanAt(i), std::nullopt).status, LidarFrameStatus::Ok);
 
 	// A dropout in the middle: the pose moves on at constant velocity, then tracking resumes.
 	const LidarOdometryResult prev = lo.process(0.6, d.scanAt(5), std::nullopt);
 	const LidarOdometryResult gap = lo.process(0.7, PointCloud(), std::nullopt);
-	EXPECT_EQ(gap.status, FrameStatus::Skipped);
+	EXPECT_EQ(gap.status, LidarFrameStatus::Skipped);
 	EXPECT_TRUE(gap.pose.isApprox(prev.pose * gap.guess, 1e-9));
 	EXPECT_LT(translationError(gap.pose, T0.inverse() * d.truth(6)), 0.1);  // steady speed
 	for (int i = 7; i <= 9; ++i)
 	{
 		const LidarOdometryResult r = lo.process(0.1 + 0.1 * i, d.scanAt(i), std::nullopt);
-		EXPECT_EQ(r.status, FrameStatus::Ok) << r.reason;
+		EXPECT_EQ(r.status, LidarFrameStatus::Ok) << r.reason;
 		EXPECT_LT(translationError(r.pose, T0.inverse() * d.truth(i)), 0.05);
 	}
 }

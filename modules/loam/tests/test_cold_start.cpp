@@ -48,7 +48,7 @@ void expectColdStart(bool hdl)
 	for (const Eigen::Isometry3d& d : deltas)
 	{
 		const LidarOdometryResult r = registerPair(hdl, d, seed++);
-		EXPECT_EQ(r.status, FrameStatus::Ok) << r.reason;
+		EXPECT_EQ(r.status, LidarFrameStatus::Ok) << r.reason;
 		EXPECT_LT(translationError(r.pose, d), 0.02);
 		EXPECT_LT(rotationErrorDeg(r.pose, d), 0.1);
 	}
@@ -79,7 +79,7 @@ TEST(ColdStart, DriveAtThirtyMetresPerSecondWithAGap)
 			if (i >= 8 && i <= 10) continue;
 			const Eigen::Isometry3d truth = T0.inverse() * lidarPoseAt(path, s0 + dir * 3.0 * i);
 			const LidarOdometryResult r = lo.process(0.1 * i, scan(w, m, T0 * truth, &rng), std::nullopt);
-			EXPECT_EQ(r.status, i ? FrameStatus::Ok : FrameStatus::Initialized) << i << ": " << r.reason;
+			EXPECT_EQ(r.status, i ? LidarFrameStatus::Ok : LidarFrameStatus::Initialized) << i << ": " << r.reason;
 			if (i > 0) max_rel = std::max(max_rel, translationError(r.pose, truth) / (3.0 * i));
 		}
 		std::printf("30 m/s %s with a 0.4 s gap: largest error %.3f %% of the distance\n", dir > 0 ? "forward" : "backward",

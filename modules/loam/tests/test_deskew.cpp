@@ -23,7 +23,7 @@ TEST(Deskew, TimesBeyondTheSweepTakeTheirFractionOfTheMotion)
 		pts.push_back(p);
 	}
 	ScanPoints moved = pts;
-	deskew(moved, motion, 0.1);
+	deskewTabulated(moved, motion, 0.1);
 	for (std::size_t i = 0; i < pts.size(); ++i)
 	{
 		const Eigen::Vector3d want = expTwist(pts[i].time / 0.1 * logTwist(motion)) * pts[i].p.cast<double>();
@@ -54,7 +54,7 @@ TEST(Deskew, RollingSweepWithTheTrueMotionGivesTheStaticScene)
 		p.p = (expTwist(-tau * xi) * p.p.cast<double>()).cast<float>();  // seen from the sensor at its firing
 		sweep.push_back(p);
 	}
-	deskew(sweep, motion, 0.1);
+	deskewTabulated(sweep, motion, 0.1);
 	double worst = 0;
 	for (std::size_t i = 0; i < scene.size(); ++i) worst = std::max(worst, (sweep[i].p - scene[i].p).cast<double>().norm());
 	EXPECT_LT(worst, 5e-5);

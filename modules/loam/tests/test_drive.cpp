@@ -58,7 +58,7 @@ DriveStats drive(const LidarModel& lidar, const LoamOptions& opt, const Path& pa
 		st.max_rot_err_deg = std::max(st.max_rot_err_deg, er);
 		st.final_trans_err = et;
 		if (i > 0) st.mean_ms += r.ms.total() / (frames - 1), st.max_ms = std::max(st.max_ms, r.ms.total());
-		if (r.status != FrameStatus::Ok && i > 0) ++st.not_ok;
+		if (r.status != LidarFrameStatus::Ok && i > 0) ++st.not_ok;
 		st.map_edge_points = std::max(st.map_edge_points, r.map_edge_points);
 		st.mapping_edges = std::max(st.mapping_edges, r.mapping.n_edges);
 		if (verbose)

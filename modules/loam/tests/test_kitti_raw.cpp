@@ -42,7 +42,7 @@ TEST(KittiRaw, RunsToTheEndWithoutJumps)
 		const PointCloud pc = readKittiBin(scans / name);
 		ASSERT_GT(pc.size(), 100000u);
 		const LidarOdometryResult r = lo.process(0.1 * i, pc, std::nullopt);
-		EXPECT_EQ(r.status, i == 0 ? FrameStatus::Initialized : FrameStatus::Ok) << i << ": " << r.reason;
+		EXPECT_EQ(r.status, i == 0 ? LidarFrameStatus::Initialized : LidarFrameStatus::Ok) << i << ": " << r.reason;
 		EXPECT_FALSE(i > 0 && r.mapping.degeneracy.degenerate) << i;
 		const double step = (r.pose.translation() - prev.translation()).norm();
 		length += step;

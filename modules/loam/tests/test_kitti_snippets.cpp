@@ -90,7 +90,7 @@ double frameToFrameRms(const Sequence& s, const std::vector<int>& order, const L
 	{
 		const double t = order.back() > order.front() ? s.t[order[k]] : s.t[k];  // played backwards: at the same rate
 		const LidarOdometryResult r = lo.process(t, s.scans[order[k]], std::nullopt);
-		EXPECT_NE(r.status, FrameStatus::Skipped) << k << ": " << r.reason;
+		EXPECT_NE(r.status, LidarFrameStatus::Skipped) << k << ": " << r.reason;
 		est.push_back(r.pose);
 		if (k == 0) continue;
 		const Eigen::Isometry3d gt = s.truth[order[k - 1]].inverse() * s.truth[order[k]];

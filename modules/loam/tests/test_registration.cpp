@@ -61,7 +61,7 @@ void expectRecovered(bool hdl, const LoamOptions& o)
 			translationError(r.pose, p.truth), rotationErrorDeg(r.pose, p.truth),
 			translationError(r.odometry.T_prev_curr, p.truth), rotationErrorDeg(r.odometry.T_prev_curr, p.truth),
 			r.mapping.degeneracy.min_eigenvalue);
-		EXPECT_EQ(r.status, FrameStatus::Ok) << r.reason;
+		EXPECT_EQ(r.status, LidarFrameStatus::Ok) << r.reason;
 		EXPECT_LT(translationError(r.pose, p.truth), 0.01);
 		EXPECT_LT(rotationErrorDeg(r.pose, p.truth), 0.05);
 		EXPECT_TRUE(r.odometry.ok) << r.odometry.reason;

@@ -50,7 +50,7 @@ void GlobalMap::insert(const PointCloud& scan, const Eigen::Isometry3d& world_T_
 
 PointCloud GlobalMap::takePoints()
 {
-	occupied_ = VoxelHash();
+	occupied_ = VoxelHashMap();
 	PointCloud out = std::move(points_);
 	points_ = PointCloud();
 	return out;
@@ -59,7 +59,7 @@ PointCloud GlobalMap::takePoints()
 void GlobalMap::coarsen()
 {
 	leaf_ *= 2;
-	occupied_ = VoxelHash();
+	occupied_ = VoxelHashMap();
 	std::size_t kept = 0;
 	for (const auto& p : points_)
 		if (occupied_.insert(key({p.x, p.y, p.z}), 0).second) points_[kept++] = p;

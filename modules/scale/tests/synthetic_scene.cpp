@@ -1,5 +1,7 @@
 #include "synthetic_scene.h"
 
+#include <vlo/core/units.h>
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -11,8 +13,6 @@ namespace vlo::scale::test
 {
 namespace
 {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-
 /// Random rectangles of random grey: corners and edges at every scale from 10 cm to 1 m.
 std::vector<cv::Mat> makeTexture(std::mt19937& rng)
 {
@@ -185,7 +185,7 @@ PointCloud scanScene(const Scene& scene, const LidarModel& m, const Eigen::Isome
 	for (int a = 0; a < steps; ++a)
 		for (double e : m.elevations_deg)
 		{
-			const double az = a * m.azimuth_step_deg * kDeg, el = e * kDeg;
+			const double az = a * m.azimuth_step_deg * kRadPerDeg, el = e * kRadPerDeg;
 			const Eigen::Vector3d dl(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
 			double t;
 			int p;
@@ -205,7 +205,7 @@ FramePair makePair(const Scene& scene, const LidarModel& lidar, double forward, 
 	const Eigen::Isometry3d w_T_v0 = Eigen::Isometry3d::Identity();
 	Eigen::Isometry3d w_T_v1 = Eigen::Isometry3d::Identity();
 	w_T_v1.translate(Eigen::Vector3d(forward, 0.03 * forward, 0.0));
-	w_T_v1.rotate(Eigen::AngleAxisd(yaw_deg * kDeg, Eigen::Vector3d::UnitZ()));
+	w_T_v1.rotate(Eigen::AngleAxisd(yaw_deg * kRadPerDeg, Eigen::Vector3d::UnitZ()));
 	const Eigen::Isometry3d w_T_c0 = w_T_v0 * f.rig.vehicle_T_camera, w_T_c1 = w_T_v1 * f.rig.vehicle_T_camera;
 	f.prev = renderImage(scene, f.rig.camera, w_T_c0, image_noise, seed);
 	f.cur = renderImage(scene, f.rig.camera, w_T_c1, image_noise, seed + 1);

@@ -1,4 +1,5 @@
 #include <vlo/core/error.h>
+#include <vlo/core/units.h>
 #include <vlo/sim/config.h>
 
 #include <algorithm>
@@ -66,7 +67,6 @@ SensorRig defaultRig()
 	rig.camera.cy = 185.2157;
 	rig.camera.width = 1241;
 	rig.camera.height = 376;
-	const double deg = M_PI / 180;
 	auto rot = [](double yaw, double pitch, double roll) {
 		return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
 			Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
@@ -75,9 +75,9 @@ SensorRig defaultRig()
 	// Optical frame (z forward, x right, y down) expressed in vehicle axes (x forward, y left, z up).
 	Eigen::Matrix3d optical;
 	optical << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-	rig.vehicle_T_camera.linear() = rot(0.4 * deg, 0.8 * deg, -0.3 * deg) * optical;
+	rig.vehicle_T_camera.linear() = rot(0.4 * kRadPerDeg, 0.8 * kRadPerDeg, -0.3 * kRadPerDeg) * optical;
 	rig.vehicle_T_camera.translation() = Eigen::Vector3d(1.07, 0.06, 1.65);
-	rig.vehicle_T_lidar.linear() = rot(-0.7 * deg, 0.3 * deg, 0.2 * deg);
+	rig.vehicle_T_lidar.linear() = rot(-0.7 * kRadPerDeg, 0.3 * kRadPerDeg, 0.2 * kRadPerDeg);
 	rig.vehicle_T_lidar.translation() = Eigen::Vector3d(0.80, 0.0, 1.73);
 	return rig;
 }

@@ -1,3 +1,4 @@
+#include <vlo/core/units.h>
 #include <vlo/sim/lidar_errors.h>
 #include <vlo/sim/rng.h>
 
@@ -8,7 +9,6 @@ namespace vlo::sim
 {
 namespace
 {
-constexpr double kDeg = M_PI / 180;
 constexpr double kMaxTanIncidence = 10;  // 84 deg: beyond, the footprint term stops growing
 }  // namespace
 
@@ -17,8 +17,8 @@ LidarErrors::LidarErrors(const LidarRealism& p, int lasers, uint64_t seed) : p_(
 	Rng rng = Rng::stream(seed, "lidar calibration");
 	for (int i = 0; i < lasers; ++i)
 	{
-		elevation_.push_back(p.elevation_error_deg * kDeg * rng.normal());
-		azimuth_.push_back(p.azimuth_error_deg * kDeg * rng.normal());
+		elevation_.push_back(p.elevation_error_deg * kRadPerDeg * rng.normal());
+		azimuth_.push_back(p.azimuth_error_deg * kRadPerDeg * rng.normal());
 		range_.push_back(p.range_offset_m * rng.normal());
 		gain_.push_back(std::max(0.0, 1 + p.intensity_gain_error * rng.normal()));
 	}

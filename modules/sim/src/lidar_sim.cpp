@@ -1,5 +1,6 @@
 #include "depth_lookup.h"
 
+#include <vlo/core/units.h>
 #include <vlo/sim/lidar_errors.h>
 #include <vlo/sim/lidar_sim.h>
 #include <vlo/sim/rng.h>
@@ -11,9 +12,8 @@ namespace vlo::sim
 {
 namespace
 {
-constexpr double kDeg = M_PI / 180;
-constexpr double kHalfSector = 22.5 * kDeg;
-constexpr double kMargin = 1.5 * kDeg;
+constexpr double kHalfSector = 22.5 * kRadPerDeg;
+constexpr double kMargin = 1.5 * kRadPerDeg;
 
 Eigen::Matrix3d opticalAlong(double yaw)
 {
@@ -31,8 +31,8 @@ LidarSim::LidarSim(const LidarModel& model, bool distortion, bool ideal_deskew)
 	// Square pixels 0.8x the azimuth step at the view centre; tall enough for all beams at the edges.
 	const double step = 2 * M_PI / model_.azimuth_steps, f = 1.0 / (0.8 * step);
 	const double a = kHalfSector + kMargin;
-	const double top = *std::max_element(model_.elevations_deg.begin(), model_.elevations_deg.end()) * kDeg + kMargin;
-	const double bot = *std::min_element(model_.elevations_deg.begin(), model_.elevations_deg.end()) * kDeg - kMargin;
+	const double top = *std::max_element(model_.elevations_deg.begin(), model_.elevations_deg.end()) * kRadPerDeg + kMargin;
+	const double bot = *std::min_element(model_.elevations_deg.begin(), model_.elevations_deg.end()) * kRadPerDeg - kMargin;
 	const double yTop = std::min(-f * std::tan(top), -f * std::tan(top) / std::cos(a));
 	const double yBot = std::max(-f * std::tan(bot), -f * std::tan(bot) / std::cos(a));
 	K_.fx = K_.fy = f;
@@ -51,7 +51,8 @@ LidarSim::LidarSim(const LidarModel& model, bool distortion, bool ideal_deskew)
 	{
 		const double phi = azimuthOf(c);
 		for (double el : model_.elevations_deg)
-			dirs_.emplace_back(std::cos(el * kDeg) * std::cos(phi), std::cos(el * kDeg) * std::sin(phi), std::sin(el * kDeg));
+			dirs_.emplace_back(std::cos(el * kRadPerDeg) * std::cos(phi), std::cos(el * kRadPerDeg) * std::sin(phi),
+				std::sin(el * kRadPerDeg));
 		int v = static_cast<int>(std::lround((phi < 0 ? phi + 2 * M_PI : phi) / (2 * kHalfSector))) % 8;
 		if (distortion_ && v == 4 && phi < 0) v = 8;
 		viewOf_.push_back(v);
@@ -63,7 +64,7 @@ LidarSim::LidarSim(const LidarModel& model, bool distortion, bool ideal_deskew)
 
 Eigen::Vector3d LidarSim::firedDirection(const LidarErrors& e, int column, int laser) const
 {
-	const double el = model_.elevations_deg[static_cast<std::size_t>(laser)] * kDeg + e.elevationOffset(laser);
+	const double el = model_.elevations_deg[static_cast<std::size_t>(laser)] * kRadPerDeg + e.elevationOffset(laser);
 	const double phi = azimuthOf(column) + e.azimuthOffset(laser);
 	return {std::cos(el) * std::cos(phi), std::cos(el) * std::sin(phi), std::sin(el)};
 }

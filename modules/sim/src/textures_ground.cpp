@@ -1,5 +1,5 @@
 // Ground textures: road, sidewalk, curb, grass, gravel.
-#include "canvas.h"
+#include "texture_canvas.h"
 
 #include <vlo/sim/rng.h>
 #include <vlo/sim/textures.h>
@@ -10,13 +10,13 @@ namespace vlo::sim
 {
 namespace
 {
-Texture finish(const Canvas& c, double w, double h) { return {c.toImage(), w, h}; }
+Texture finish(const TextureCanvas& c, double w, double h) { return {c.toImage(), w, h}; }
 }  // namespace
 
 Texture roadTexture(const RoadMarkings& m, uint64_t seed)
 {
 	const double len = 24.0, wid = 2 * m.half_width;
-	Canvas c(2048, 512, 88);
+	TextureCanvas c(2048, 512, 88);
 	const double pu = c.width() / len, pv = c.height() / wid;  // pixels per metre
 	Rng rng = Rng::stream(seed, "road texture");
 	c.addNoise(seed, 6, 14, 3);  // large tone variation
@@ -62,7 +62,7 @@ Texture roadTexture(const RoadMarkings& m, uint64_t seed)
 
 Texture sidewalkTexture(uint64_t seed)
 {
-	Canvas c(512, 512, 150);
+	TextureCanvas c(512, 512, 150);
 	Rng rng = Rng::stream(seed, "sidewalk texture");
 	const int slab = 512 / 6;  // 0.5 m slabs
 	for (int j = 0; j < 6; ++j)
@@ -82,7 +82,7 @@ Texture sidewalkTexture(uint64_t seed)
 
 Texture curbTexture(uint64_t seed)
 {
-	Canvas c(512, 32, 175);
+	TextureCanvas c(512, 32, 175);
 	c.addNoise(seed, 16, 14, 3);
 	for (int x = 0; x < 512; x += 64) c.rect(x, 0, x + 3, 32, 90, 0.8f);  // 1 m stones
 	return finish(c, 8.0, 0.5);
@@ -90,7 +90,7 @@ Texture curbTexture(uint64_t seed)
 
 Texture grassTexture(uint64_t seed, float base)
 {
-	Canvas c(512, 512, base);
+	TextureCanvas c(512, 512, base);
 	Rng rng = Rng::stream(seed, "grass texture");
 	c.addNoise(seed, 4, 25, 2);
 	c.addNoise(seed + 7, 64, 14, 2);
@@ -101,7 +101,7 @@ Texture grassTexture(uint64_t seed, float base)
 
 Texture gravelTexture(uint64_t seed)
 {
-	Canvas c(256, 256, 120);
+	TextureCanvas c(256, 256, 120);
 	Rng rng = Rng::stream(seed, "gravel texture");
 	c.addNoise(seed, 8, 15, 3);
 	c.speckle(rng, 500, 2.0, 120, 50);

@@ -1,5 +1,5 @@
 // Textures of objects: facades, cars, trees, poles, signs, walls, corridor murals.
-#include "canvas.h"
+#include "texture_canvas.h"
 
 #include <vlo/sim/rng.h>
 #include <vlo/sim/textures.h>
@@ -13,7 +13,7 @@ Texture facadeTexture(uint64_t seed)
 	Rng rng = Rng::stream(seed, "facade texture");
 	const double W = 16, H = 24, pm = 64;  // 64 px per metre
 	const float wall = static_cast<float>(rng.uniform(110, 205));
-	Canvas c(int(W * pm), int(H * pm), wall);
+	TextureCanvas c(int(W * pm), int(H * pm), wall);
 	c.addNoise(seed, 4, 16, 4);
 	const int cols = rng.integer(5, 7);
 	const double floorH = rng.uniform(3.0, 3.6), winW = rng.uniform(0.9, 1.5), winH = rng.uniform(1.2, 1.8);
@@ -53,7 +53,7 @@ Texture facadeTexture(uint64_t seed)
 
 Texture roofTexture(uint64_t seed)
 {
-	Canvas c(256, 256, 90);
+	TextureCanvas c(256, 256, 90);
 	c.addNoise(seed, 4, 20, 4);
 	return {c.toImage(), 8, 8};
 }
@@ -62,7 +62,7 @@ Texture carBodyTexture(uint64_t seed)
 {
 	Rng rng = Rng::stream(seed, "car body texture");
 	const float body = static_cast<float>(rng.uniform(40, 210));
-	Canvas c(512, 96, body);  // 4.5 m x 0.85 m; v = 0 at the bottom of the body
+	TextureCanvas c(512, 96, body);  // 4.5 m x 0.85 m; v = 0 at the bottom of the body
 	c.addNoise(seed, 8, 8, 2);
 	const double pm = 512 / 4.5;
 	for (double x : {0.85, 3.55})  // wheels (centre 0.3 m above the body's bottom edge)
@@ -83,7 +83,7 @@ Texture carCabinTexture(uint64_t seed)
 {
 	Rng rng = Rng::stream(seed, "car cabin texture");
 	const float body = static_cast<float>(rng.uniform(40, 210));
-	Canvas c(512, 64, body);  // 4.5 m x 0.55 m
+	TextureCanvas c(512, 64, body);  // 4.5 m x 0.55 m
 	const double pm = 512 / 4.5;
 	c.rect(int(0.15 * pm), 6, int(4.35 * pm), 54, 45);
 	c.addNoise(seed, 16, 18, 2);  // reflections
@@ -93,7 +93,7 @@ Texture carCabinTexture(uint64_t seed)
 
 Texture barkTexture(uint64_t seed)
 {
-	Canvas c(128, 512, 75);
+	TextureCanvas c(128, 512, 75);
 	Rng rng = Rng::stream(seed, "bark texture");
 	c.addNoise(seed, 3, 20, 3);
 	for (int i = 0; i < 60; ++i)
@@ -106,7 +106,7 @@ Texture barkTexture(uint64_t seed)
 
 Texture foliageTexture(uint64_t seed)
 {
-	Canvas c(512, 512, 95);
+	TextureCanvas c(512, 512, 95);
 	Rng rng = Rng::stream(seed, "foliage texture");
 	c.addNoise(seed, 4, 25, 2);
 	for (int i = 0; i < 2500; ++i)  // leaves and gaps: 3-8 cm blobs, light on top of dark
@@ -120,7 +120,7 @@ Texture foliageTexture(uint64_t seed)
 
 Texture poleTexture(uint64_t seed)
 {
-	Canvas c(32, 512, 130);
+	TextureCanvas c(32, 512, 130);
 	c.addNoise(seed, 2, 25, 3);
 	c.rect(0, 0, 32, 40, 60);  // dark foot
 	for (int y = 140; y < 512; y += 96) c.rect(0, y, 32, y + 6, 190);  // bands
@@ -130,7 +130,7 @@ Texture poleTexture(uint64_t seed)
 Texture signTexture(uint64_t seed)
 {
 	Rng rng = Rng::stream(seed, "sign texture");
-	Canvas c(128, 128, 235);
+	TextureCanvas c(128, 128, 235);
 	c.ellipse(64, 64, 60, 60, 50);
 	c.ellipse(64, 64, 46, 46, 235);
 	c.rect(34, 54, 94, 74, static_cast<float>(rng.uniform(20, 80)));
@@ -140,7 +140,7 @@ Texture signTexture(uint64_t seed)
 Texture gardenWallTexture(uint64_t seed)
 {
 	Rng rng = Rng::stream(seed, "wall texture");
-	Canvas c(512, 256, 95);  // mortar
+	TextureCanvas c(512, 256, 95);  // mortar
 	for (int row = 0; row < 8; ++row)  // irregular stone courses, 0.25 m
 	{
 		int x = -rng.integer(0, 60);
@@ -158,7 +158,7 @@ Texture gardenWallTexture(uint64_t seed)
 Texture muralTexture(uint64_t seed)
 {
 	Rng rng = Rng::stream(seed, "mural texture");
-	Canvas c(2048, 512, static_cast<float>(rng.uniform(120, 170)));  // 32 m x 8 m, 64 px/m
+	TextureCanvas c(2048, 512, static_cast<float>(rng.uniform(120, 170)));  // 32 m x 8 m, 64 px/m
 	c.addNoise(seed, 8, 18, 4);
 	for (int i = 0; i < 40; ++i)  // panels and posters
 	{

@@ -1,6 +1,7 @@
 // The realistic sensor (realism.h): each error has the documented size, is fixed by the seed, and a
 // realistic scan of exact geometry deviates from it by exactly the modelled errors.
 #include <gtest/gtest.h>
+#include <vlo/core/units.h>
 #include <vlo/sim/camera_errors.h>
 #include <vlo/sim/config.h>
 #include <vlo/sim/lidar_errors.h>
@@ -20,8 +21,6 @@ using namespace vlo::sim;
 
 namespace
 {
-constexpr double kDeg = M_PI / 180;
-
 struct Stats
 {
 	double mean = 0, sd = 0;
@@ -72,8 +71,8 @@ TEST(LidarErrors, CalibrationErrorsHaveTheDocumentedSpreadAndAreFixedBySeed)
 		EXPECT_EQ(a.elevationOffset(i), b.elevationOffset(i));
 		EXPECT_EQ(a.rangeOffset(i), b.rangeOffset(i));
 	}
-	EXPECT_NEAR(stats(el).sd, 0.06 * kDeg, 0.004 * kDeg);
-	EXPECT_NEAR(stats(az).sd, 0.06 * kDeg, 0.004 * kDeg);
+	EXPECT_NEAR(stats(el).sd, 0.06 * kRadPerDeg, 0.004 * kRadPerDeg);
+	EXPECT_NEAR(stats(az).sd, 0.06 * kRadPerDeg, 0.004 * kRadPerDeg);
 	EXPECT_NEAR(stats(dr).sd, 0.015, 0.001);
 	EXPECT_NE(a.elevationOffset(0), c.elevationOffset(0)) << "another seed, another unit";
 }
@@ -90,8 +89,8 @@ TEST(LidarErrors, RangeNoiseHasTheDocumentedSigmaGrowingWithRangeAndIncidence)
 	EXPECT_NEAR(s.mean, 10, 0.0005);
 	EXPECT_NEAR(s.sd, square, 0.02 * square);
 	// The same surface at 40 m and 80 deg incidence: the footprint's spread, 40 * 1 mrad * tan(80 deg) / sqrt 3.
-	const double c80 = std::cos(80 * kDeg), r80 = hdl.detectionRange(255, c80);
-	const double grazing = std::hypot(0.02 * (1 + std::pow(40 / r80, 2)), 40 * 0.001 * std::tan(80 * kDeg) / std::sqrt(3.0));
+	const double c80 = std::cos(80 * kRadPerDeg), r80 = hdl.detectionRange(255, c80);
+	const double grazing = std::hypot(0.02 * (1 + std::pow(40 / r80, 2)), 40 * 0.001 * std::tan(80 * kRadPerDeg) / std::sqrt(3.0));
 	EXPECT_NEAR(hdl.rangeSigma(40, c80, r80), grazing, 1e-12);
 	EXPECT_GT(grazing, 6 * square);
 	const Stats g = stats(measured(hdl, {40, c80, 0, 255}, 40000));
@@ -114,7 +113,7 @@ TEST(LidarErrors, DarkAndGrazingSurfacesLoseTheirEchoes)
 	EXPECT_NEAR(kept({50 * std::sqrt(0.5), 1.0, 0, 0}), 0.5 * 0.995, 0.015);  // half at the detection range
 	// Grey asphalt (rho 0.285) at 87 deg incidence, the road 33 m ahead seen from 1.73 m: R_max 40 m.
 	const uint8_t asphalt = 80;
-	const double c = std::cos(87 * kDeg), rmax = e.detectionRange(asphalt, c);
+	const double c = std::cos(87 * kRadPerDeg), rmax = e.detectionRange(asphalt, c);
 	EXPECT_NEAR(rmax, 50 * std::sqrt(0.285 * std::sqrt(c) / 0.1), 0.1);
 	EXPECT_NEAR(rmax, 40.4, 0.1);
 	EXPECT_GT(kept({0.7 * rmax, c, 0, asphalt}), 0.97);
@@ -189,7 +188,7 @@ TEST(LidarRealism, ScanOfExactGeometryDeviatesByTheModelledErrorsAlone)
 	{
 		const Eigen::Vector3d q(p.x, p.y, p.z);
 		const int laser = 63 - p.ring;  // hdl64's elevations run top to bottom
-		const double el = model.elevations_deg[static_cast<std::size_t>(laser)] * kDeg + errors.elevationOffset(laser);
+		const double el = model.elevations_deg[static_cast<std::size_t>(laser)] * kRadPerDeg + errors.elevationOffset(laser);
 		const double phi = std::atan2(q.y(), q.x()) + errors.azimuthOffset(laser);
 		const Eigen::Vector3d fired(std::cos(el) * std::cos(phi), std::cos(el) * std::sin(phi), std::sin(el));
 		double truth = 0;

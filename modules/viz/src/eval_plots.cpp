@@ -1,4 +1,5 @@
 #include <vlo/core/error.h>
+#include <vlo/core/units.h>
 #include <vlo/eval/kitti_curves.h>
 #include <vlo/viz/eval_plots.h>
 #include <vlo/viz/topdown.h>
@@ -13,7 +14,7 @@ namespace vlo
 {
 namespace
 {
-constexpr double kDegPerRad = 180.0 / M_PI, kKmhPerMs = 3.6;
+constexpr double kKmhPerMs = 3.6;
 
 enum class Error { Translation, Rotation };
 enum class Axis { Length, Speed };

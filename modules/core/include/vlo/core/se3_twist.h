@@ -1,7 +1,7 @@
 #pragma once
 // SE(3) exponential and logarithm of twists [translation part; rotation vector]: a constant twist is
 // a constant body velocity, the motion model of KISS-ICP's prediction and Gauss-Newton step and of
-// both deskews (a vehicle in a turn moves on an arc, not on the chord).
+// the deskews (a vehicle in a turn moves on an arc, not on the chord).
 #include <Eigen/Geometry>
 
 namespace vlo

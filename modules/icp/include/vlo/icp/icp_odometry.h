@@ -6,6 +6,7 @@
 //   IcpOdometry odo(options);
 //   for (each scan) { auto r = odo.process(t, scan, guess_or_nullopt); use r.pose; }
 #include <vlo/core/frame.h>
+#include <vlo/core/lidar_frame_status.h>
 #include <vlo/core/stage_times.h>
 #include <vlo/icp/adaptive_threshold.h>
 #include <vlo/icp/deskew.h>
@@ -19,18 +20,10 @@
 
 namespace vlo::icp
 {
-enum class FrameStatus
-{
-	Ok,  ///< registered to the map
-	Initialized,  ///< first usable scan: the map starts here
-	Skipped,  ///< no usable point or too few correspondences (reason says which): pose from the prediction
-};
-const char* toString(FrameStatus s);
-
 struct IcpResult
 {
 	double t = 0;
-	FrameStatus status = FrameStatus::Skipped;
+	LidarFrameStatus status = LidarFrameStatus::Skipped;  ///< Ok, Initialized or Skipped
 	std::string reason;  ///< empty when Ok
 	Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< sensor in the first sensor frame
 	Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  ///< pose of this frame in the previous

@@ -22,7 +22,8 @@ inline Voxel voxelOf(const Eigen::Vector3d& p, double size)
 		static_cast<int>(std::floor(p.z() / size))};
 }
 
-struct VoxelHash
+/// The hash function of Voxel keys for std::unordered_map/set (core's VoxelHashMap is a map itself).
+struct VoxelHasher
 {
 	std::size_t operator()(const Voxel& v) const
 	{

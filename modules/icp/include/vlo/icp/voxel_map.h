@@ -34,6 +34,6 @@ class VoxelMap
    private:
 	double voxel_size_, radius_, min_spacing2_;
 	std::size_t max_points_;
-	std::unordered_map<Voxel, Points, VoxelHash> voxels_;
+	std::unordered_map<Voxel, Points, VoxelHasher> voxels_;
 };
 }  // namespace vlo::icp

@@ -6,6 +6,7 @@
 //   for (each scan) { auto r = lo.process(t, scan, vo_motion_or_nullopt); use r.pose; }
 //   lo.mapPoints();  // for map.pcd
 #include <vlo/core/frame.h>
+#include <vlo/core/lidar_frame_status.h>
 #include <vlo/core/stage_times.h>
 #include <vlo/loam/features.h>
 #include <vlo/loam/mapping.h>
@@ -22,19 +23,12 @@
 
 namespace vlo::loam
 {
-enum class FrameStatus
-{
-	Ok,  ///< the enabled registrations succeeded (scan-to-map, or scan-to-scan without mapping)
-	Initialized,  ///< first usable frame: the map starts here
-	Degraded,  ///< a registration failed (reason says why): pose from the other stage or the prior
-	Skipped,  ///< unusable input (reason says why): pose propagated by the prior
-};
-const char* toString(FrameStatus s);
-
 struct LidarOdometryResult
 {
 	double t = 0;
-	FrameStatus status = FrameStatus::Skipped;
+	/// Ok: scan-to-map succeeded (scan-to-scan without mapping); Degraded: pose from the other stage
+	/// or the prior; Skipped: unusable input, pose propagated by the prior.
+	LidarFrameStatus status = LidarFrameStatus::Skipped;
 	std::string reason;  ///< empty when Ok
 	Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< LiDAR in the first LiDAR frame
 	Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  ///< pose of this frame in the previous

@@ -6,7 +6,7 @@
 //   holds at most the volume of that ball, however long the drive.
 // - Fast neighbour search without rebuilding a kd-tree each frame: the k nearest points within r
 //   of q all lie in the 2x2x2 voxels nearest to q whenever r <= voxel_size / 2.
-#include <vlo/core/voxel_hash.h>
+#include <vlo/core/voxel_hash_map.h>
 
 #include <Eigen/Core>
 
@@ -51,7 +51,7 @@ class VoxelMap
 	double size_, resolution_;
 	float inv_size_;
 	int cells_per_axis_, max_points_;
-	VoxelHash index_;  ///< voxel key -> slot in voxels_
+	VoxelHashMap index_;  ///< voxel key -> slot in voxels_
 	std::vector<Voxel> voxels_;
 	std::vector<std::uint32_t> free_;  ///< recycled slots
 	std::size_t n_points_ = 0;

@@ -4,7 +4,7 @@
 // past it the voxels double in size and the map is thinned again, and memory stays bounded however
 // long the drive (a 5 km drive gets a coarser map.pcd than a 500 m one; doc/ROBUSTNESS.md).
 #include <vlo/core/frame.h>
-#include <vlo/core/voxel_hash.h>
+#include <vlo/core/voxel_hash_map.h>
 
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -40,7 +40,7 @@ class GlobalMap
 
 	double leaf_, max_range_;
 	std::size_t max_points_;
-	VoxelHash occupied_;  ///< voxel key -> nothing (a set)
+	VoxelHashMap occupied_;  ///< voxel key -> nothing (a set)
 	PointCloud points_;
 };
 }  // namespace vlo

@@ -1,10 +1,10 @@
-#include "vlo/core/voxel_hash.h"
+#include "vlo/core/voxel_hash_map.h"
 
 #include <algorithm>
 
 namespace vlo
 {
-void VoxelHash::allocate(std::size_t capacity)
+void VoxelHashMap::allocate(std::size_t capacity)
 {
 	std::size_t cap = 64;
 	while (cap < capacity) cap *= 2;
@@ -15,7 +15,7 @@ void VoxelHash::allocate(std::size_t capacity)
 	size_ = 0;
 }
 
-void VoxelHash::grow()
+void VoxelHashMap::grow()
 {
 	std::vector<Slot> old;
 	old.swap(slots_);
@@ -24,9 +24,9 @@ void VoxelHash::grow()
 		if (s.key != kEmpty) insert(s.key, s.value);
 }
 
-void VoxelHash::reserve(std::size_t n) { allocate(2 * n + 1); }
+void VoxelHashMap::reserve(std::size_t n) { allocate(2 * n + 1); }
 
-std::pair<std::uint32_t, bool> VoxelHash::insert(std::uint64_t key, std::uint32_t value)
+std::pair<std::uint32_t, bool> VoxelHashMap::insert(std::uint64_t key, std::uint32_t value)
 {
 	if ((size_ + 1) * 2 > slots_.size()) grow();  // load factor <= 1/2 keeps probes short
 	for (std::size_t i = slotOf(key);; i = (i + 1) & mask_)
@@ -44,7 +44,7 @@ std::pair<std::uint32_t, bool> VoxelHash::insert(std::uint64_t key, std::uint32_
 }
 
 // Backward-shift deletion: later entries of the probe run move up, so no tombstones are needed.
-void VoxelHash::erase(std::uint64_t key)
+void VoxelHashMap::erase(std::uint64_t key)
 {
 	if (slots_.empty()) return;
 	std::size_t i = slotOf(key);

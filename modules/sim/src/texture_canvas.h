@@ -10,10 +10,10 @@ namespace vlo::sim
 {
 class Rng;
 
-class Canvas
+class TextureCanvas
 {
    public:
-	Canvas(int width, int height, float fill);
+	TextureCanvas(int width, int height, float fill);
 	int width() const { return w_; }
 	int height() const { return h_; }
 	float& at(int x, int y) { return px_[wrapY(y) * w_ + wrapX(x)]; }

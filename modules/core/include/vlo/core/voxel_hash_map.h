@@ -29,7 +29,7 @@ inline std::uint64_t voxelKey(const Eigen::Vector3i& k)
 	return (u(k.x()) << 42) | (u(k.y()) << 21) | u(k.z());
 }
 
-class VoxelHash
+class VoxelHashMap
 {
    public:
 	static constexpr std::uint32_t kNone = 0xFFFFFFFFu;

@@ -1,17 +1,17 @@
 // The open-addressing voxel hash against std::unordered_map under inserts and erasures.
 #include <gtest/gtest.h>
-#include <vlo/core/voxel_hash.h>
+#include <vlo/core/voxel_hash_map.h>
 
 #include <random>
 #include <unordered_map>
 
 namespace vlo::test
 {
-TEST(VoxelHash, MatchesUnorderedMap)
+TEST(VoxelHashMap, MatchesUnorderedMap)
 {
 	std::mt19937 rng(1);
 	std::uniform_int_distribution<int> coord(-40, 40);
-	VoxelHash h;
+	VoxelHashMap h;
 	std::unordered_map<std::uint64_t, std::uint32_t> ref;
 	for (int i = 0; i < 20000; ++i)
 	{
@@ -37,6 +37,6 @@ TEST(VoxelHash, MatchesUnorderedMap)
 		++n;
 	});
 	EXPECT_EQ(n, ref.size());
-	EXPECT_EQ(h.find(voxelKey(Eigen::Vector3i(1000, 0, 0))), VoxelHash::kNone);
+	EXPECT_EQ(h.find(voxelKey(Eigen::Vector3i(1000, 0, 0))), VoxelHashMap::kNone);
 }
 }  // namespace vlo::test

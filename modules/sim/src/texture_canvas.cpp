@@ -1,4 +1,4 @@
-#include "canvas.h"
+#include "texture_canvas.h"
 
 #include <vlo/sim/rng.h>
 
@@ -7,9 +7,12 @@
 
 namespace vlo::sim
 {
-Canvas::Canvas(int width, int height, float fill) : w_(width), h_(height), px_(static_cast<size_t>(width) * height, fill) {}
+TextureCanvas::TextureCanvas(int width, int height, float fill)
+	: w_(width), h_(height), px_(static_cast<size_t>(width) * height, fill)
+{
+}
 
-void Canvas::addNoise(uint64_t seed, int cells, float amplitude, int octaves)
+void TextureCanvas::addNoise(uint64_t seed, int cells, float amplitude, int octaves)
 {
 	std::vector<double> lattice;
 	for (int o = 0; o < octaves; ++o, cells *= 2, amplitude *= 0.5f)
@@ -39,7 +42,7 @@ void Canvas::addNoise(uint64_t seed, int cells, float amplitude, int octaves)
 	}
 }
 
-void Canvas::rect(int x0, int y0, int x1, int y1, float value, float alpha)
+void TextureCanvas::rect(int x0, int y0, int x1, int y1, float value, float alpha)
 {
 	for (int y = y0; y < y1; ++y)
 		for (int x = x0; x < x1; ++x)
@@ -49,7 +52,7 @@ void Canvas::rect(int x0, int y0, int x1, int y1, float value, float alpha)
 		}
 }
 
-void Canvas::ellipse(double cx, double cy, double rx, double ry, float value, float alpha)
+void TextureCanvas::ellipse(double cx, double cy, double rx, double ry, float value, float alpha)
 {
 	for (int y = static_cast<int>(std::floor(cy - ry)); y <= static_cast<int>(std::ceil(cy + ry)); ++y)
 		for (int x = static_cast<int>(std::floor(cx - rx)); x <= static_cast<int>(std::ceil(cx + rx)); ++x)
@@ -61,7 +64,7 @@ void Canvas::ellipse(double cx, double cy, double rx, double ry, float value, fl
 		}
 }
 
-void Canvas::line(double x0, double y0, double x1, double y1, double width, float value, float alpha)
+void TextureCanvas::line(double x0, double y0, double x1, double y1, double width, float value, float alpha)
 {
 	const double len = std::hypot(x1 - x0, y1 - y0);
 	const int steps = std::max(1, static_cast<int>(len / std::max(0.5, width * 0.5)));
@@ -72,19 +75,19 @@ void Canvas::line(double x0, double y0, double x1, double y1, double width, floa
 	}
 }
 
-void Canvas::shade(int x0, int y0, int x1, int y1, float delta)
+void TextureCanvas::shade(int x0, int y0, int x1, int y1, float delta)
 {
 	for (int y = y0; y < y1; ++y)
 		for (int x = x0; x < x1; ++x) at(x, y) += delta;
 }
 
-void Canvas::speckle(Rng& rng, int n, double r, float value, float spread)
+void TextureCanvas::speckle(Rng& rng, int n, double r, float value, float spread)
 {
 	for (int i = 0; i < n; ++i)
 		ellipse(rng.uniform(0, w_), rng.uniform(0, h_), r, r, value + static_cast<float>(rng.uniform(-spread, spread)));
 }
 
-mrpt::img::CImage Canvas::toImage() const
+mrpt::img::CImage TextureCanvas::toImage() const
 {
 	mrpt::img::CImage img(w_, h_, mrpt::img::CH_GRAY);
 	for (int y = 0; y < h_; ++y)

@@ -15,6 +15,9 @@ if(VLO_SANITIZE OR VLO_FUZZ)
     add_compile_options(-Wno-maybe-uninitialized)
   endif()
   add_link_options(-fsanitize=address,undefined)
+  # One name for "built with ASan", whichever the compiler (each spells its own differently): the corrupt-input guard
+  # leaves operator new to ASan, and the tests set no address-space limit under it.
+  add_compile_definitions(VLO_ADDRESS_SANITIZER)
 endif()
 if(VLO_SANITIZE)
   # List the tests when ctest runs, under the sanitizer options of `make test-sanitize`, not at build time.

@@ -80,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(Readers, Fuzz,
 
 int main(int argc, char** argv)
 {
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(VLO_ADDRESS_SANITIZER)
 	// MRPT asks for tens of GB on a corrupt count: a limit turns that into a failed allocation, not a
 	// machine out of memory. (AddressSanitizer reserves terabytes of shadow memory and caps allocations itself.)
 	const rlimit limit{4000000000ul, 4000000000ul};

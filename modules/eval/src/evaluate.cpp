@@ -1,5 +1,6 @@
 #include <vlo/core/error.h>
 #include <vlo/eval/evaluate.h>
+#include <vlo/eval/trajectory_alignment.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -83,14 +84,7 @@ EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptio
 
 Trajectory alignedEstimate(const EvalReport& r)
 {
-	Trajectory aligned = r.association.est;
-	if (r.ate)
-		for (auto& p : aligned)
-		{
-			p.pose.translation() = r.ate->alignment * Eigen::Vector3d(p.pose.translation());
-			p.pose.linear() = r.ate->alignment.R * p.pose.linear();
-		}
-	return aligned;
+	return r.ate ? transformed(r.association.est, r.ate->alignment) : r.association.est;
 }
 
 namespace

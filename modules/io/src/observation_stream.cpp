@@ -1,9 +1,7 @@
 #include "observation_stream.h"
 
-#include "allocation_limit.h"
-#include "jpeg_errors.h"
-
 #include <vlo/core/error.h>
+#include <vlo/io/allocation_limit.h>
 
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CSensoryFrame.h>
@@ -40,7 +38,6 @@ std::string mrptMessage(const std::string& what)
 ObservationStream::ObservationStream(const std::string& path)
 	: path_(path), in_(path), ar_(mrpt::serialization::archiveUniquePtrFrom(in_))
 {
-	useThrowingJpegErrors();
 	if (!readObject()) failInput(path_, "empty rawlog: no observations");
 }
 

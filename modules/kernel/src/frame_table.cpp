@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 namespace vlo
@@ -33,24 +32,38 @@ std::string moduleOf(const std::string& column)
 }
 }  // namespace
 
+std::string FrameTable::Cell::text() const
+{
+	if (const auto* text = std::get_if<std::string>(&value)) return *text;
+	if (const auto* count = std::get_if<long long>(&value)) return std::to_string(*count);
+	const double v = std::get<double>(value);
+	if (!std::isfinite(v)) return "nan";
+	char buf[64];
+	std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
+	return withoutNegativeZero(buf);
+}
+
+double FrameTable::Cell::number() const
+{
+	if (const auto* count = std::get_if<long long>(&value)) return static_cast<double>(*count);
+	const auto* v = std::get_if<double>(&value);
+	return v && std::isfinite(*v) ? *v : NAN;
+}
+
 void FrameTable::newRow() { rows_.emplace_back(); }
 
-void FrameTable::set(const std::string& column, const std::string& value)
+void FrameTable::setCell(const std::string& column, Cell cell)
 {
 	if (rows_.empty()) newRow();
 	if (std::find(columns_.begin(), columns_.end(), column) == columns_.end()) columns_.push_back(column);
-	rows_.back()[column] = value;
+	rows_.back()[column] = std::move(cell);
 }
 
-void FrameTable::set(const std::string& column, double value, int decimals)
-{
-	if (!std::isfinite(value)) return set(column, std::string("nan"));
-	char buf[64];
-	std::snprintf(buf, sizeof(buf), "%.*f", decimals, value);
-	set(column, withoutNegativeZero(buf));
-}
+void FrameTable::set(const std::string& column, const std::string& value) { setCell(column, {value}); }
 
-void FrameTable::set(const std::string& column, long long value) { set(column, std::to_string(value)); }
+void FrameTable::set(const std::string& column, double value, int decimals) { setCell(column, {value, decimals}); }
+
+void FrameTable::set(const std::string& column, long long value) { setCell(column, {value}); }
 
 void FrameTable::setTimes(const std::string& prefix, const StageTimes& times)
 {
@@ -62,7 +75,7 @@ void FrameTable::setCells(const FrameTable& part)
 	if (part.rows_.empty()) return;
 	const auto& row = part.rows_.back();
 	for (const auto& c : part.columns_)
-		if (const auto cell = row.find(c); cell != row.end()) set(c, cell->second);
+		if (const auto cell = row.find(c); cell != row.end()) setCell(c, cell->second);
 }
 
 std::vector<std::string> FrameTable::columns() const
@@ -91,19 +104,17 @@ std::string FrameTable::cell(std::size_t row, const std::string& column) const
 {
 	const auto& r = rows_.at(row);
 	const auto it = r.find(column);
-	return it == r.end() ? "" : it->second;
+	return it == r.end() ? "" : it->second.text();
 }
 
 std::vector<double> FrameTable::numbers(const std::string& column) const
 {
 	std::vector<double> v;
 	v.reserve(rows_.size());
-	for (std::size_t i = 0; i < rows_.size(); ++i)
+	for (const auto& r : rows_)
 	{
-		const std::string s = cell(i, column);
-		char* end = nullptr;
-		const double d = std::strtod(s.c_str(), &end);
-		v.push_back(s.empty() || *end != '\0' ? NAN : d);
+		const auto it = r.find(column);
+		v.push_back(it == r.end() ? NAN : it->second.number());
 	}
 	return v;
 }
@@ -120,7 +131,7 @@ void FrameTable::write(const std::string& path) const
 		for (std::size_t c = 0; c < order.size(); ++c)
 		{
 			const auto it = r.find(order[c]);
-			out << (c ? "," : "") << (it == r.end() ? "" : csvCell(it->second));
+			out << (c ? "," : "") << (it == r.end() ? "" : csvCell(it->second.text()));
 		}
 		out << '\n';
 	}

@@ -23,7 +23,7 @@ TEST(FrameTable, ColumnsInFirstSeenOrderAndCsvQuoting)
 	EXPECT_EQ(t.cell(1, "scale"), "1.023");
 	const auto s = t.numbers("scale");
 	EXPECT_TRUE(std::isnan(s[0]));
-	EXPECT_DOUBLE_EQ(s[1], 1.023);
+	EXPECT_DOUBLE_EQ(s[1], 1.02345);  // the number as set: only the CSV rounds it
 
 	t.write("frame_table_test.csv");
 	std::ifstream in("frame_table_test.csv");

@@ -133,7 +133,6 @@ RunSummary runPipeline(const RunRequest& req)
 
 	RunOutputs outputs;
 	outputs.plan = plan;
-	outputs.motion_source = stages.motion.get();
 	GlobalMap globalMap(popt.map_voxel, popt.map_max_range);
 	ProgressLine progress("vlo-run: frame", 0);
 	const auto loopStart = SteadyClock::now();
@@ -160,6 +159,7 @@ RunSummary runPipeline(const RunRequest& req)
 		failInput(req.rawlog, "the visual odometry never initialised in " + std::to_string(outputs.table.rows()) +
 				" frames: no trajectory to write (too few frames, or too little texture or motion)");
 
+	if (stages.motion) outputs.setMotion(*stages.motion);
 	outputs.map = globalMap.takePoints();
 	outputs.cam0_T_vehicle = cam0_T_vehicle;
 	if (!outputs.cam0_T_vehicle && reader.vehicleTCamera0()) outputs.cam0_T_vehicle = reader.vehicleTCamera0()->inverse();
@@ -168,7 +168,8 @@ RunSummary runPipeline(const RunRequest& req)
 	RunSummary summary;
 	try
 	{
-		summary = outputs.write(req.out, popt, config.effectiveIni(), req.gt);
+		summary = outputs.write(req.out, config.effectiveIni());
+		if (popt.snapshots) writeSnapshots(req.out + "/snapshots", outputs, stages.motion.get(), req.gt);
 		summary.frames = outputs.table.rows();
 		summary.seconds = loopSeconds;
 		summary.ms_per_frame = 1000.0 * loopSeconds / summary.frames;

@@ -2,19 +2,13 @@
 #include <vlo/core/build_info.h>
 #include <vlo/core/error.h>
 #include <vlo/core/log.h>
-#include <vlo/eval/association.h>
-#include <vlo/eval/umeyama.h>
 #include <vlo/io/pcd.h>
 #include <vlo/pipeline/run_outputs.h>
-#include <vlo/viz/map3d.h>
-#include <vlo/viz/projected_scan.h>
-#include <vlo/viz/topdown.h>
+#include <vlo/viz/run_snapshots.h>
 
-#include <mrpt/config/CConfigFileMemory.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <filesystem>
 
 namespace vlo
 {
@@ -38,73 +32,6 @@ void writeTrajectory(const std::string& dir, const std::string& name, const Traj
 	if (cam0_T_vehicle && traj.size() == frames)
 		writeKittiPoses(dir + "/trajectory_" + name + ".kitti.txt", vehicleToCamera(relativeToFirst(traj), *cam0_T_vehicle));
 }
-
-/// Mode vo alone: the VO's path is in map units, so it is Sim(3)-aligned to the ground truth when there is
-/// one, and says so; without one, the legend and title say "unscaled" and lengths and axes are in map units.
-void presentUnscaledVo(NamedTrajectory& vo, const Trajectory& gt, TopDownStyle& style)
-{
-	const Association a = associate(gt, vo.traj);
-	if (a.matched() >= 3)
-	{
-		std::vector<Eigen::Vector3d> src, dst;
-		for (std::size_t i = 0; i < a.matched(); ++i)
-			src.push_back(a.est[i].pose.translation()), dst.push_back(a.gt[i].pose.translation());
-		const Sim3 S = umeyama(src, dst, true);
-		for (auto& p : vo.traj)
-		{
-			p.pose.translation() = S * Eigen::Vector3d(p.pose.translation());
-			p.pose.linear() = S.R * p.pose.linear();
-		}
-		vo.name += " (Sim(3)-aligned to the ground truth)";
-		style.title += ", VO unscaled: Sim(3)-aligned to the ground truth";
-		return;
-	}
-	vo.name += " (unscaled)";
-	style.title += ", VO unscaled (map units, not metres)";
-	style.unit = "map units";
-}
-
-/// Snapshots are a convenience: a failure to render is reported, not fatal to the run.
-void writeSnapshots(const std::string& dir, const RunOutputs& o, const std::string& gtPath)
-{
-	std::filesystem::create_directories(dir);
-	Trajectory gt;
-	if (!gtPath.empty())
-	{
-		// Only the part of the ground truth the run covered (it may have stopped early).
-		const double t0 = o.table.numbers("t").front() - 1e-6, t1 = o.table.numbers("t").back() + 1e-6;
-		for (const auto& p : readTum(gtPath))
-			if (p.t >= t0 && p.t <= t1) gt.push_back(p);
-		gt = relativeToFirst(gt);
-	}
-	std::vector<NamedTrajectory> trajs;
-	if (!o.lidar.empty()) trajs.push_back({o.plan.lidar_label, o.lidar, std::nullopt});
-	if (o.motion_source && !o.motion_source->trajectory().empty())
-		trajs.push_back({o.motion_source->label(), o.motion_source->trajectory(), std::nullopt});
-	if (trajs.empty()) return;
-	TopDownStyle td;
-	td.title = "vlo-run (" + o.plan.name + "), " + std::to_string(o.table.rows()) + " frames";
-	if (o.plan.name == "vo") presentUnscaledVo(trajs.back(), gt, td);
-	renderTopDown(trajs, gt.empty() ? nullptr : &gt, dir + "/topdown.png", td);
-	if (!o.map.empty())
-	{
-		Map3DStyle ms;
-		ms.title = "map and trajectory";
-		renderMap3D(o.map, trajs, gt.empty() ? nullptr : &gt, dir + "/map3d.png", ms);
-	}
-	for (const auto& f : o.sample_frames.items())
-	{
-		if (!f.has_image || !f.has_scan) continue;
-		ProjectedScanStyle ps;
-		char t[48];
-		std::snprintf(t, sizeof t, "  (t = %.3f s)", f.t);  // as vlo-snapshot's
-		ps.title = "frame " + std::to_string(f.index) + t;
-		char name[64];
-		std::snprintf(name, sizeof(name), "/frame_%06zu.png", f.index);
-		renderProjectedScan(f.image, f.scan, f.rig, dir + name, {}, ps);
-	}
-	if (o.motion_source) o.motion_source->writeSnapshots(dir);
-}
 }  // namespace
 
 void RunOutputs::addSampleFrame(const Frame& f)
@@ -114,48 +41,60 @@ void RunOutputs::addSampleFrame(const Frame& f)
 	sample_frames.offer(std::move(copy));
 }
 
-RunSummary RunOutputs::write(
-	const std::string& dir, const PipelineOptions& opt, const std::string& effectiveIni, const std::string& gtPath) const
+void RunOutputs::setMotion(const MotionSource& source)
+{
+	motion = source.trajectory();
+	const double last_t = table.numbers("t").back();
+	while (!motion.empty() && motion.back().t > last_t + 1e-9) motion.pop_back();
+	motion_label = source.label();
+	figures = source.figures();
+}
+
+RunSummary RunOutputs::write(const std::string& dir, const std::string& effectiveIni) const
 {
 	RunSummary s;
 	s.mode = plan.name;
-	Trajectory motion = motion_source ? motion_source->trajectory() : Trajectory{};
-	// A run stopped early with two threads: the motion source may be a few frames past the last row.
-	const double last_t = table.numbers("t").back();
-	while (!motion.empty() && motion.back().t > last_t + 1e-9) motion.pop_back();
 	const Trajectory& finalTraj = plan.lidar_odometry ? lidar : motion;
 	s.final_trajectory = "trajectory_" + plan.name + ".tum";
 	if (!lidar.empty()) writeTrajectory(dir, plan.name, lidar, cam0_T_vehicle, table.rows());
 	if (!motion.empty()) writeTrajectory(dir, "vo", motion, cam0_T_vehicle, table.rows());
 	s.path_length_m = pathLength(finalTraj);
 	s.max_step_m = maxStep(finalTraj);
-	if (motion_source) s.figures = motion_source->figures();
+	s.figures = figures;
 	table.write(dir + "/frames.csv");
 	if (!map.empty()) writePcd(dir + "/map.pcd", map);
-	{
-		AtomicOutputFile ini(dir + "/run.ini");
-		const BuildInfo& b = buildInfo();
-		ini.stream() << "# Effective options of this run (defaults included).\n# Written by vlo " << b.version << ", git "
-					 << b.git_commit << ", " << b.build_type << " build.\n"
-					 << effectiveIni;
-		ini.commit();
-	}
-	if (opt.snapshots)
-	{
-		try
-		{
-			writeSnapshots(dir + "/snapshots", *this, gtPath);
-		}
-		catch (const InputError&)
-		{
-			throw;  // a bad --gt file is the user's to fix
-		}
-		catch (const std::exception& e)
-		{
-			logger().logStr(mrpt::system::LVL_WARN, std::string("snapshots not written: ") + e.what());
-		}
-	}
+	AtomicOutputFile ini(dir + "/run.ini");
+	const BuildInfo& b = buildInfo();
+	ini.stream() << "# Effective options of this run (defaults included).\n# Written by vlo " << b.version << ", git "
+				 << b.git_commit << ", " << b.build_type << " build.\n"
+				 << effectiveIni;
+	ini.commit();
 	return s;
+}
+
+void writeSnapshots(const std::string& dir, const RunOutputs& o, const MotionSource* motion, const std::string& gtPath)
+{
+	RunSnapshots run;
+	run.mode = o.plan.name;
+	run.frames = o.table.rows();
+	if (!o.lidar.empty()) run.trajectories.push_back({o.plan.lidar_label, o.lidar, std::nullopt});
+	if (!o.motion.empty()) run.trajectories.push_back({o.motion_label, o.motion, std::nullopt});
+	run.gt_path = gtPath;
+	const std::vector<double> t = o.table.numbers("t");
+	run.t_first = t.front(), run.t_last = t.back();
+	try
+	{
+		renderRunSnapshots(dir, std::move(run), o.map, o.sample_frames.items());
+		if (motion) motion->writeSnapshots(dir);
+	}
+	catch (const InputError&)
+	{
+		throw;  // a bad --gt file is the user's to fix
+	}
+	catch (const std::exception& e)
+	{
+		logger().logStr(mrpt::system::LVL_WARN, std::string("snapshots not written: ") + e.what());
+	}
 }
 
 void writeSummaryJson(const std::string& path, const RunSummary& s, const RunRequest& req)

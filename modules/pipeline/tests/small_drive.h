@@ -23,14 +23,15 @@ inline SensorRig smallRig()
 	return r;
 }
 
-inline void writeSmallDrive(const std::string& path, int frames, const SensorRig& rig)
+/// Frame i at t0 + 0.1 i s.
+inline void writeSmallDrive(const std::string& path, int frames, const SensorRig& rig, double t0 = 0)
 {
 	RawlogWriter w(path, false);
 	for (int i = 0; i < frames; ++i)
 	{
 		Frame f;
 		f.index = std::size_t(i);
-		f.t = 0.1 * i;
+		f.t = t0 + 0.1 * i;
 		f.has_image = f.has_scan = true;
 		f.image = mrpt::img::CImage(32, 24, mrpt::img::CH_GRAY);
 		f.image.filledRectangle(0, 0, 31, 23, mrpt::img::TColor(10 * i, 10 * i, 10 * i));

@@ -324,6 +324,18 @@ TEST_F(RunLoop, ModeLoRunsNoVisualOdometryAndModeVoNoLidarOdometry)
 	EXPECT_NEAR(t.back().pose.translation().z(), 5.0, 1e-6);  // the VO's own pose, map units
 }
 
+// The motion source's trajectory is cut at the last row's time as the frame has it, not as frames.csv
+// rounds it: t = 0.5000004 s is written 0.500000, which once dropped the VO's pose at that frame.
+TEST_F(RunLoop, TheMotionSourceKeepsItsPoseAtTheLastFrameWhateverTheCsvRounding)
+{
+	test::writeSmallDrive(dir_ + "/drive.rawlog", kFrames, test::smallRig(), 4e-7);
+	run({"pipeline.mode=vo"});
+	const Trajectory t = readTum(out("trajectory_vo.tum"));
+	ASSERT_EQ(t.size(), std::size_t(kFrames - 1));  // not tracked at frame 0
+	EXPECT_EQ(column(out("frames.csv"), "t").back(), "0.500000");
+	EXPECT_NEAR(t.back().t, 0.5000004, 1e-9);
+}
+
 TEST_F(RunLoop, AMetricVoNeedsNoScaleCorrection)
 {
 	run({"pipeline.mode=vlo", "pipeline.motion_source=visual", "pipeline.visual_odometry=fake_stereo"});

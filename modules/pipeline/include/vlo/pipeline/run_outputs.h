@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vlo
@@ -19,7 +20,9 @@ struct RunOutputs
 	RunPlan plan;
 	FrameTable table;
 	Trajectory lidar;  ///< the LiDAR odometry's (trajectory_lo.tum or trajectory_vlo.tum), vehicle frame
-	const MotionSource* motion_source = nullptr;  ///< its path is trajectory_vo.tum; draws its own snapshots
+	Trajectory motion;  ///< the motion source's (trajectory_vo.tum), vehicle frame; see setMotion
+	std::string motion_label;  ///< its name in plots
+	std::vector<std::pair<std::string, double>> figures;  ///< the motion source's counts for summary.json
 	PointCloud map;  ///< vehicle frame of the first frame (already thinned)
 	/// KITTI's camera 0 on the vehicle, when known: each trajectory is also written as KITTI poses.
 	std::optional<Eigen::Isometry3d> cam0_T_vehicle;
@@ -27,10 +30,17 @@ struct RunOutputs
 	BoundedSample<Frame> sample_frames{24};
 
 	void addSampleFrame(const Frame& f);
-	/// Writes trajectories (trajectory_<name>.tum, and .kitti.txt with cam0_T_vehicle), frames.csv, map.pcd, run.ini and snapshots/; returns the summary figures.
-	RunSummary write(const std::string& dir, const PipelineOptions& opt, const std::string& effectiveIni,
-		const std::string& gtPath) const;
+	/// After the frame loop: the motion source's trajectory up to the table's last row (with two threads a
+	/// run stopped early may have it a few frames further), its label and figures.
+	void setMotion(const MotionSource& source);
+	/// Writes trajectories (trajectory_<name>.tum, and .kitti.txt with cam0_T_vehicle), frames.csv, map.pcd
+	/// and run.ini; returns the summary figures.
+	RunSummary write(const std::string& dir, const std::string& effectiveIni) const;
 };
+
+/// snapshots/ of DIR (viz's run snapshots, then the motion source's own when there is one): a convenience, so
+/// a failure to render is logged, not fatal; a bad --gt file still throws InputError.
+void writeSnapshots(const std::string& dir, const RunOutputs& o, const MotionSource* motion, const std::string& gtPath);
 
 /// summary.json: mode, frames, timing, path length, largest step, reader statistics, inputs, the per-stage timings.
 void writeSummaryJson(const std::string& path, const RunSummary& s, const RunRequest& req);

@@ -4,8 +4,9 @@
 
 namespace vlo
 {
-/// While alive, an mrpt::aligned_malloc or operator new above `max_bytes` on this thread throws
-/// std::bad_alloc (see allocation_limit.cpp for why MRPT cannot be trusted with a corrupt count).
+/// While alive, asks that an mrpt::aligned_malloc or operator new above `max_bytes` on this thread throw
+/// std::bad_alloc. Only a program that links vlo::corrupt_input_guard (modules/io/corrupt_input_guard/,
+/// the apps do) enforces it; elsewhere it changes nothing.
 class ScopedAllocationLimit
 {
    public:
@@ -17,4 +18,7 @@ class ScopedAllocationLimit
    private:
 	std::size_t previous_;
 };
+
+/// The largest allocation this thread may make now (SIZE_MAX outside a ScopedAllocationLimit).
+std::size_t allocationLimit() noexcept;
 }  // namespace vlo

@@ -1,6 +1,6 @@
 // vlo's own voxel filter, kd-tree and voxel maps beside PCL's VoxelGrid and KdTreeFLANN and a plain
 // nanoflann index, on the synthetic HDL-64E scans of the other LiDAR benchmarks (~125k points):
-// build time, and query time of the searches LOAM and ICP make (doc/RESULTS.md).
+// build time, and query time of the searches LOAM and ICP make (whether vlo's own are worth keeping).
 //   build/bin/bench_nn --benchmark_counters_tabular=true
 // The queries are the next scan's points (1 m further on); in each query group every structure indexes the same
 // points (the content of LOAM's or ICP's voxel map built from the first scan) and answers the same queries.

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The LiDAR methods side by side on one drive (doc/RESULTS.md "A simulator as imperfect as a real sensor"):
+# The LiDAR methods side by side on one drive (does a simulated drive rank them as a real one does?):
 # A-LOAM alone (mode lo), the KISS-ICP-like odometry (mode lo, lidar_odometry = icp) and the full system
 # (mode vlo). Prints one row each: estimated path / true path, ATE (SE(3)-aligned), KITTI t_err over 10-30 m,
 # and the median over the frames of the scan-to-map RMS residual (frames.csv lo_map_rms_m).

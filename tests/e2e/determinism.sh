@@ -2,7 +2,7 @@
 # The same run with one thread, with two, and with two again (modes vlo and lo, a short simulated drive) gives
 # byte-identical outputs: trajectories, map.pcd, run.ini (apart from its threads line), and frames.csv and
 # summary.json apart from their timing (ms_* columns; seconds, ms_per_frame and the stage_timings figures).
-# With two threads the VO's local bundle adjustment also runs beside tracking (doc/SPEED.md).
+# With two threads the VO's local bundle adjustment also runs beside tracking (its result enters at a fixed frame).
 set -u
 BIN="${VLO_BIN:?}"
 INI="${VLO_SRC:?}/ini"

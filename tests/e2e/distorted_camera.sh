@@ -2,7 +2,7 @@
 # A lens-distorted camera (vlo-sim --camera-distortion, plumb_bob and --fisheye) on the same simulated
 # drive as an ideal one: the rawlog carries the lens, vlo-run undistorts, and the full system's error
 # and the scale-corrected VO's ATE stay near the ideal camera's. 80 frames are too short for the 10 %
-# of doc/RESULTS.md (a 150-frame drive): here the bounds are 2x / 3x, which the VO misses by 10x when
+# measured on a 150-frame drive: here the bounds are 2x / 3x, which the VO misses by 10x when
 # the images are not undistorted (VO ATE 1.9 m against 0.19 m with plumb_bob, measured).
 set -u
 BIN="${VLO_BIN:?}"

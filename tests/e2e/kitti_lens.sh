@@ -2,7 +2,7 @@
 # A real KITTI snippet through a known lens: the colour images of odometry 00 (frames 0-9) remapped
 # through a plumb_bob lens (k1 -0.3, k2 0.1, p1 = p2 = 1e-3; vlo-test-distort-rawlog, the lens written
 # into the camera model), then vlo-run undistorts them. The full system's frame-to-frame error stays within
-# 10 % of the original's (measured on the four snippets: -2 % to +4 %, doc/RESULTS.md "Lens distortion");
+# 10 % of the original's (measured on the four snippets: -2 % to +4 %);
 # the scale-corrected VO's alone moves more on 10 frames (-29 % to +24 %, here -26 %): its bound is 1.3x.
 # The lens's black corners (rays beyond the original picture) are the only information lost.
 set -u

@@ -9,8 +9,8 @@
 # 10 m and scatters by +-20 %, so the test judges the ratio of the means over three seeds. Measured
 # (frame-to-frame / t_err): to the undistorted drive lo 1.055 / 1.043, vlo 1.094 / 1.052; to the ideal
 # deskew lo 1.085 / 1.067, vlo 1.129 / 1.076 (vlo 1.281 / 1.125 before scan-to-map's rounds went on
-# until converged: a frame where the VO's guess went straight to scan-to-map was left 1 cm off,
-# doc/RESULTS.md "A rolling LiDAR sweep"); times ignored 5.0 / 16.1.
+# until converged: a frame where the VO's guess went straight to scan-to-map was left 1 cm off);
+# times ignored 5.0 / 16.1.
 set -u
 BIN="${VLO_BIN:?}"
 INI="${VLO_SRC:?}/ini"

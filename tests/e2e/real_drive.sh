@@ -2,8 +2,8 @@
 # The real KITTI raw drive 2011_09_26_0013, frames 0-47 (../shared/data): 54 m at 11-13 m/s with raw
 # HDL-64 sweeps and the OXTS ground truth. vlo-import kitti-raw writes the truth and times every return
 # from the sweep's stamps; A-LOAM alone (lo), the full system (vlo) and the ICP odometry (KISS-ICP's
-# method, without deskew as KISS-ICP's defaults) are held to the path length and ATE measured
-# (doc/RESULTS.md "Real KITTI raw drive at speed"), with a margin for the VO's chaos. Deskewing with the
+# method, without deskew as KISS-ICP's defaults) are held to the path length and ATE measured on this
+# drive, with a margin for the VO's chaos. Deskewing with the
 # laser's true direction (clockwise) fits the map better than with the other one.
 set -u
 BIN="${VLO_BIN:?}"

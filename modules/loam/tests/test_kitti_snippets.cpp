@@ -1,7 +1,7 @@
 // Real HDL-64E drives with ground truth: KITTI odometry 00, 04, 06 and 08, frames 0-9, LOAM alone
 // from a standing prior although the car already drives at 7-13 m/s. Frame-to-frame translation
 // error (RMS over the 9 steps) must stay below KISS-ICP's on the same frames (00 20.1, 04 52.2,
-// 06 15.5, 08 41.6 mm, doc/RESULTS.md), also with frames 3-5 missing and played backwards.
+// 06 15.5, 08 41.6 mm with its defaults), also with frames 3-5 missing and played backwards.
 // Skipped when the shared data is absent.
 #include <gtest/gtest.h>
 #include <vlo/loam/lidar_odometry.h>

@@ -41,7 +41,7 @@ void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions
 
 	// Each frame's motion source, then its LiDAR odometry and its row of the table. With two threads
 	// the LiDAR odometry runs on the worker, up to kAhead frames behind the motion source: the
-	// motion source never reads the LiDAR odometry's results (doc/SPEED.md), so the order of each
+	// motion source never reads the LiDAR odometry's results (it takes only the frame), so the order of each
 	// module's calls, and with it every output, is the same as with one thread.
 	constexpr std::size_t kAhead = 3;
 	const auto lidarAndRow = [&](const FrameInFlight& done) {

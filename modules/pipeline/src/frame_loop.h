@@ -32,7 +32,8 @@ struct Stages
 /// Runs the reader's frames (up to [pipeline] max_frames) through the stages: one row of
 /// outputs.table per frame, outputs.lidar, the sample frames, and the scans of map.pcd into `map`.
 /// Each scan gets its point times ([lidar]) before the LiDAR odometry sees it.
-/// With [pipeline] threads 2 the outputs are the same as with 1 (doc/SPEED.md). Returns once every
+/// With [pipeline] threads 2 the outputs are the same as with 1 (each module gets the same inputs in
+/// the same order). Returns once every
 /// thread it started has ended, also when it throws: InputEndedEarly when reading fails, Interrupted
 /// after a frame's row on Ctrl-C, with the rows of the frames before complete.
 void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const PointTimeOptions& times,

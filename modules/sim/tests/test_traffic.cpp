@@ -177,7 +177,7 @@ TEST(Traffic, LidarSeesEachVehicleAtItsFiringTimeAndTheCameraAtTheImageTime)
 }
 
 // --traffic-without-returns: the vehicles block beams and return nothing (the floor for any removal of
-// moving points, doc/RESULTS.md "Moving traffic"): the scan is the one with returns less exactly its
+// moving points): the scan is the one with returns less exactly its
 // returns from vehicles (noise off: the same points), and no return lies behind a vehicle.
 TEST(Traffic, WithoutReturnsTheVehiclesHideTheWorldAndShowNothing)
 {

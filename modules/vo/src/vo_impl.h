@@ -22,7 +22,7 @@ struct VisualOdometry::Impl
 	/// keyframe's correction, as the keyframe's own motion does when the BA runs inline, so the
 	/// motions add up to the adjusted map (moving the last frame with its keyframe, as ORB-SLAM's
 	/// tracking does, dropped that correction: VO ATE 0.79 instead of 0.39 m on the 400-frame urban
-	/// drive, doc/SPEED.md).
+	/// drive).
 	void continueMapping(VoFrameInfo& info);
 	void initialise(TrackedFrame& cur, VoFrameInfo& info);
 	void startMap(InitResult& r, TrackedFrame& cur, VoFrameInfo& info);

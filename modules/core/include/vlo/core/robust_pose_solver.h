@@ -4,8 +4,7 @@
 // squares (Marquardt's damping at 1e-4 of the diagonal), kept only where the weighted cost drops as
 // the model predicts. The rotation is perturbed on the left, the translation added:
 // T' = (exp(d_rot) R, t + d_trans). LOAM's line/plane solve and the VO's reprojection solve use it:
-// Ceres' per-solve set-up cost three times these small problems (doc/SPEED.md "LOAM's pose solve
-// without Ceres").
+// Ceres' per-solve set-up cost three times these small problems (6 unknowns, a few thousand residuals).
 #include <Eigen/Geometry>
 
 #include <cmath>

@@ -23,7 +23,7 @@ struct ScanOptions : public OptionSet
 	/// A scan with point times ([lidar] point_times) is deskewed to the frame's time, and registered
 	/// again while the motion found still changes
 	int max_deskew_passes = 3;  ///< deskew + register again while the motion found still changes
-	/// ... by more than this [m] (a rolling sweep's drift needs it settled to millimetres: doc/RESULTS.md)
+	/// ... by more than this [m] (a rolling sweep's drift needs it settled to millimetres)
 	double deskew_tolerance = 0.002;
 	double deskew_tolerance_deg = 0.02;  ///< ... or this [deg]
 

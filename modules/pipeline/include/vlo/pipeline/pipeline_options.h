@@ -41,7 +41,7 @@ struct PipelineOptions : public OptionSet
 	int scale_snapshot_every = 0;  ///< mode vlo: a scale-corrector snapshot every N frames (0 = none)
 	/// 1: everything on one thread; 2: frames read ahead on a thread, and the LiDAR odometry on another,
 	/// up to 3 frames behind the motion source; auto: 2 when the process may use two cores or more.
-	/// The outputs are the same whatever the count (doc/SPEED.md).
+	/// The outputs are the same whatever the count: the motion source never reads the LiDAR odometry's results.
 	std::string threads = "auto";
 
 	/// The count `threads` stands for: 1 or 2.

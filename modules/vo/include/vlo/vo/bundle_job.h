@@ -3,7 +3,7 @@
 // the window is copied out of the map when the keyframe is made (snapshotBundle), solved on a thread
 // of its own or, without one, in two pieces (the robust pass on advance(), at the frame after the
 // keyframe's; the refine pass when the result is due: with a due frame two after the keyframe no
-// frame carries the whole solve, doc/SPEED.md), and written back (applyBundle) when the due frame
+// frame carries the whole solve), and written back (applyBundle) when the due frame
 // starts. Tracking of the frames in between reads the map as it was and the solve reads only its
 // copy, so nothing is shared; and as the result enters at the same frame whether a thread solved it
 // or not, one and two threads give the same outputs.

@@ -3,7 +3,7 @@
 // cull young points that are rarely found, triangulate new points with the covisible keyframes, fuse
 // duplicates (all inline, in process()); then bundle-adjust the local window and cull redundant
 // keyframes and drop those far behind the window, which finish() does at a later, fixed frame
-// (bundle_job.h; doc/SPEED.md).
+// (bundle_job.h: off the tracking path, so a keyframe's frame does not carry the whole solve).
 #include <vlo/core/stage_times.h>
 #include <vlo/vo/bundle_job.h>
 #include <vlo/vo/map.h>

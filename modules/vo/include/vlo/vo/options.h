@@ -17,7 +17,8 @@ struct OrbOptions : public OptionSet
 	/// OpenCV's rBRIEF; or opencv: cv::ORB as it is (the strongest corners, clustered on texture).
 	std::string detector = "anms";  ///< anms | quadtree | opencv
 	/// Per image, spread over the levels as a geometric series. ORB-SLAM2 takes 2000 on KITTI; 1500 keeps
-	/// the whole system within 10 Hz on one core at about the same VO accuracy (doc/RESULTS.md).
+	/// the whole system within 10 Hz on one core at about the same VO accuracy (trees HDL-64: the VO
+	/// 32 instead of 44 ms a frame, SE(3) ATE 0.21 against 0.18 m).
 	int n_features = 1500;
 	double scale_factor = 1.2;  ///< between pyramid levels
 	int n_levels = 8;
@@ -111,7 +112,7 @@ struct MappingOptions : public OptionSet
 	int ba_refine_iterations = 10;  ///< ... second pass without the outliers
 	int max_ba_keyframes = 20;  ///< optimised keyframes (current + best covisible)
 	/// Keyframe k's local BA (and keyframe culling) enters the map when frame k + this starts; until
-	/// then it runs beside tracking (doc/SPEED.md). 0: inline, at keyframe k. With one thread its
+	/// then it runs beside tracking, so no frame waits for it. 0: inline, at keyframe k. With one thread its
 	/// robust pass runs at frame k + 1 and its refine pass at k + this (2: one pass per frame).
 	int mapping_delay = 2;
 	int min_covisibility = 15;  ///< shared points for a covisibility edge

@@ -5,10 +5,8 @@
 #include <vlo/pipeline/run_folder.h>
 #include <vlo/pipeline/run_report.h>
 #include <vlo/viz/eval_plots.h>
-#include <vlo/viz/series.h>
+#include <vlo/viz/stage_time_plot.h>
 
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -16,7 +14,6 @@ namespace vlo
 {
 namespace
 {
-constexpr double kBudgetMs = 100;  ///< one frame of a 10 Hz LiDAR
 
 /// Relative paths of the files where a run writes, sorted.
 std::vector<std::string> filesIn(const std::string& dir)
@@ -63,45 +60,10 @@ std::string accuracyText(const std::string& dir, const RunSummary& s, const RunR
 
 void writeStageTimePlot(const std::string& png, const FrameTable& table)
 {
-	const std::vector<double> frame = table.numbers("frame"), total = table.numbers("ms_total");
-	std::vector<Series> stacked;
-	std::vector<double> sum(frame.size(), 0.0);
-	auto add = [&](const std::string& name, const std::vector<double>& ms) {
-		Series s;
-		s.name = name;
-		s.x = frame;
-		s.fill = true;
-		for (std::size_t i = 0; i < frame.size(); ++i)
-		{
-			sum[i] += std::isfinite(ms[i]) ? ms[i] : 0.0;  // a stage that did not run took no time
-			s.y.push_back(sum[i]);
-		}
-		stacked.push_back(std::move(s));
-	};
-	const std::vector<std::string> columns = table.columns();
-	// A stage with sub-stages (ms_vo beside ms_vo_extract, ...) is their sum: only the sub-stages are stacked,
-	// and its own overhead goes to "other".
-	const auto hasParts = [&](const std::string& c) {
-		return std::any_of(columns.begin(), columns.end(), [&](const std::string& d) { return d.rfind(c + "_", 0) == 0; });
-	};
-	for (const auto& c : columns)
-		if (c.rfind("ms_", 0) == 0 && c != "ms_total" && !hasParts(c)) add(c.substr(3), table.numbers(c));
-	if (stacked.empty() || total.size() != frame.size()) return;
-	std::vector<double> other(frame.size());
-	for (std::size_t i = 0; i < frame.size(); ++i) other[i] = std::max(0.0, total[i] - sum[i]);
-	add("other (undistortion, map, untimed)", other);  // ms_total holds no reading (doc/FORMATS.md)
-	stacked.back().color = Rgb{170, 170, 170};  // not a stage: neutral, and never a palette colour again
-	const double top = *std::max_element(sum.begin(), sum.end());
-	SeriesStyle style;
-	style.title = "Time per frame per stage, stacked (dashed: the 100 ms budget of a 10 Hz sensor)";
-	style.xlabel = "frame";
-	style.ylabel = "time [ms]";
-	style.ymin = 0;
-	style.reference_y = kBudgetMs;
-	style.ymax = 1.05 * std::max(top, kBudgetMs);
-	style.legend_outside = true;  // up to a dozen stages: inside, the legend would hide the top of the stack
-	style.width = 1500;  // the plot keeps its width beside the legend
-	renderSeries(stacked, png, style);
+	std::vector<StageTimeColumn> columns;
+	for (const auto& c : table.columns())
+		if (c.rfind("ms_", 0) == 0) columns.push_back({c, table.numbers(c)});
+	writeStageTimePlot(png, table.numbers("frame"), columns);
 }
 
 std::string runReportMarkdown(const RunSummary& s, const RunRequest& req, const std::vector<std::string>& files,

@@ -9,9 +9,8 @@
 
 namespace vlo
 {
-/// snapshots/time_per_stage.png: each frame's ms_* stage times stacked (a stage with sub-stages, e.g. ms_vo
-/// beside ms_vo_extract, by its sub-stages; ms_total's remainder on top as "other"), with the 100 ms budget
-/// of a 10 Hz sensor dashed. Nothing when the table has no stage time.
+/// snapshots/time_per_stage.png from the table's ms_* columns (vlo/viz/stage_time_plot.h); nothing when the
+/// table has no stage time.
 void writeStageTimePlot(const std::string& png, const FrameTable& table);
 
 /// The Markdown of the report; `files` are the folder's files (relative paths) that it may link to.

@@ -1,4 +1,4 @@
-#include "vlo/core/voxel_hash_map.h"
+#include <vlo/core/voxel_hash_map.h>
 
 #include <algorithm>
 

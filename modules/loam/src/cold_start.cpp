@@ -1,4 +1,4 @@
-#include "vlo/loam/cold_start.h"
+#include <vlo/loam/cold_start.h>
 
 #include <cmath>
 

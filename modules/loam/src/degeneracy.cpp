@@ -1,4 +1,4 @@
-#include "vlo/loam/degeneracy.h"
+#include <vlo/loam/degeneracy.h>
 
 #include <Eigen/Eigenvalues>
 

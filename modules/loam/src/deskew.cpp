@@ -1,4 +1,4 @@
-#include "vlo/loam/deskew.h"
+#include <vlo/loam/deskew.h>
 
 #include <vlo/core/se3_twist.h>
 

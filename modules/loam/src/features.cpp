@@ -1,4 +1,4 @@
-#include "vlo/loam/features.h"
+#include <vlo/loam/features.h>
 
 #include <vlo/loam/rings.h>
 #include <vlo/core/voxel_hash_map.h>

@@ -1,4 +1,4 @@
-#include "vlo/loam/free_space.h"
+#include <vlo/loam/free_space.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "vlo/loam/kdtree.h"
+#include <vlo/loam/kdtree.h>
 
 #include <nanoflann.hpp>
 

@@ -1,4 +1,4 @@
-#include "vlo/loam/lidar_odometry.h"
+#include <vlo/loam/lidar_odometry.h>
 
 #include <vlo/core/se3.h>
 #include <vlo/core/se3_twist.h>

@@ -1,4 +1,4 @@
-#include "vlo/loam/mapping.h"
+#include <vlo/loam/mapping.h>
 
 #include <vlo/loam/features.h>
 #include <vlo/loam/near_points.h>

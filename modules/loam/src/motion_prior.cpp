@@ -1,4 +1,4 @@
-#include "vlo/loam/motion_prior.h"
+#include <vlo/loam/motion_prior.h>
 
 #include <vlo/core/se3.h>
 

@@ -1,4 +1,4 @@
-#include "vlo/loam/near_points.h"
+#include <vlo/loam/near_points.h>
 
 #include <vlo/core/voxel_hash_map.h>
 

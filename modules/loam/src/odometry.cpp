@@ -1,4 +1,4 @@
-#include "vlo/loam/odometry.h"
+#include <vlo/loam/odometry.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // [loam.scan], [loam.features], [loam.odometry], [loam.mapping] (with their shared solver keys),
 // [loam.prior]: every key with its type, range and help.
-#include "vlo/loam/options.h"
+#include <vlo/loam/options.h>
 
 namespace vlo::loam
 {

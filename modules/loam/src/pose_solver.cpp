@@ -1,4 +1,4 @@
-#include "vlo/loam/pose_solver.h"
+#include <vlo/loam/pose_solver.h>
 
 #include <vlo/core/robust_pose_solver.h>
 

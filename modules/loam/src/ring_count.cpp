@@ -1,4 +1,4 @@
-#include "vlo/loam/ring_count.h"
+#include <vlo/loam/ring_count.h>
 
 #include <vlo/core/error.h>
 #include <vlo/core/units.h>

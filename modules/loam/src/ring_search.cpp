@@ -1,4 +1,4 @@
-#include "vlo/loam/ring_search.h"
+#include <vlo/loam/ring_search.h>
 
 #include <vlo/loam/rings.h>
 

@@ -1,4 +1,4 @@
-#include "vlo/loam/rings.h"
+#include <vlo/loam/rings.h>
 
 #include <vlo/core/sweep_times.h>
 #include <vlo/core/units.h>

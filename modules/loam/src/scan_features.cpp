@@ -1,4 +1,4 @@
-#include "vlo/loam/scan_features.h"
+#include <vlo/loam/scan_features.h>
 
 #include <vlo/core/stopwatch.h>
 

@@ -1,4 +1,4 @@
-#include "vlo/loam/slice_table.h"
+#include <vlo/loam/slice_table.h>
 
 #include <algorithm>
 

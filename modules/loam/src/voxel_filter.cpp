@@ -1,4 +1,4 @@
-#include "vlo/loam/voxel_filter.h"
+#include <vlo/loam/voxel_filter.h>
 
 #include <vlo/core/voxel_hash_map.h>
 

@@ -1,4 +1,4 @@
-#include "vlo/loam/voxel_map.h"
+#include <vlo/loam/voxel_map.h>
 
 #include <algorithm>
 #include <cmath>

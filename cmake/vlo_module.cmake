@@ -23,8 +23,10 @@ function(vlo_add_module name)
       VLO_SHARED_DATA="${CMAKE_SOURCE_DIR}/../shared/data"
       VLO_BIN_DIR="${CMAKE_BINARY_DIR}/bin"
       VLO_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+    # Scratch folders under the build (gtest's TempDir): two builds testing at once do not share /tmp paths.
+    file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/tmp)
     gtest_discover_tests(test_${name} WORKING_DIRECTORY ${CMAKE_BINARY_DIR}
-      DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
+      DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600 ENVIRONMENT "TEST_TMPDIR=${CMAKE_BINARY_DIR}/tmp/")
   endif()
 endfunction()
 

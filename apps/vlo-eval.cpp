@@ -50,7 +50,7 @@ std::vector<std::string> runNames(const std::vector<std::string>& files)
 
 /// A TUM file as it is; KITTI poses (camera 0 in its frame at frame 0) moved onto the vehicle with the rig,
 /// timed by the KITTI times file or 0.1 s apart.
-Trajectory readInVehicleFrame(const std::string& path, const EvalOptions& opts, const std::vector<double>& kitti_times)
+Trajectory readInVehicleFrame(const std::string& path, const eval::EvalOptions& opts, const std::vector<double>& kitti_times)
 {
 	if (trajectoryFormatOf(path) == TrajectoryFormat::Tum) return readTum(path);
 	if (!opts.cam0_T_vehicle)
@@ -60,7 +60,7 @@ Trajectory readInVehicleFrame(const std::string& path, const EvalOptions& opts, 
 }
 
 /// Why the devkit's plots are missing: the KITTI metric's own note, or too few segments of every length.
-std::string whyNoKittiPlots(const EvalReport& r)
+std::string whyNoKittiPlots(const eval::EvalReport& r)
 {
 	if (!r.kitti_note.empty()) return r.kitti_note;
 	std::ostringstream s;
@@ -91,17 +91,17 @@ int run(int argc, char** argv)
 		"Scores an estimated trajectory against ground truth: the KITTI odometry metric and\n"
 		"ATE/ARE after Umeyama alignment, and the frame-to-frame relative pose error. Files are\n"
 		"TUM (8 numbers a line) or KITTI poses (12). See doc/EVALUATION.md.");
-	EvalOptions opts;
+	eval::EvalOptions opts;
 	opts.gt_name = cl.get("gt");
-	parseMetric(cl.get("metric", "all"), opts);
-	opts.align = parseAlignment(cl.get("align", "se3"));
+	eval::parseMetric(cl.get("metric", "all"), opts);
+	opts.align = eval::parseAlignment(cl.get("align", "se3"));
 	opts.association.max_gap_s = cl.getDouble("max-dt", 0);
 	if (cl.has("max-dt") && !(opts.association.max_gap_s > 0)) failInput("--max-dt", "must be positive");
 	opts.gt_translation_only = cl.has("gt-translation-only");
 	if (cl.has("cam0-T-vehicle") && cl.has("kitti-calib"))
 		failInput("command line", "give either --cam0-T-vehicle or --kitti-calib, not both");
-	if (cl.has("cam0-T-vehicle")) opts.cam0_T_vehicle = parseCam0TVehicle(cl.get("cam0-T-vehicle"));
-	if (cl.has("kitti-calib")) opts.cam0_T_vehicle = readKittiCalibTr(cl.get("kitti-calib"));
+	if (cl.has("cam0-T-vehicle")) opts.cam0_T_vehicle = eval::parseCam0TVehicle(cl.get("cam0-T-vehicle"));
+	if (cl.has("kitti-calib")) opts.cam0_T_vehicle = eval::readKittiCalibTr(cl.get("kitti-calib"));
 	if (cl.has("kitti-lengths")) opts.kitti_options.lengths = parseLengths(cl.get("kitti-lengths"));
 	const long step = cl.getInt("kitti-step", 10);
 	if (step < 1) failInput("--kitti-step", "must be at least 1");
@@ -119,7 +119,7 @@ int run(int argc, char** argv)
 	for (std::size_t i = 0; i < est_files.size(); ++i)
 	{
 		opts.est_name = est_files[i];
-		runs.push_back({names[i], evaluate(gt, readInVehicleFrame(est_files[i], opts, kitti_times), opts)});
+		runs.push_back({names[i], eval::evaluate(gt, readInVehicleFrame(est_files[i], opts, kitti_times), opts)});
 	}
 	for (const auto& run : runs)
 	{
@@ -136,9 +136,9 @@ int run(int argc, char** argv)
 			logger().logStr(mrpt::system::LVL_WARN, "--plots: no KITTI devkit plots: " + whyNoKittiPlots(runs.front().report));
 		for (const auto& f : files) std::cout << "vlo-eval: plot " << dir << "/" << f << "\n";
 	}
-	const EvalReport& report = runs.front().report;
-	if (cl.has("json")) writeJson(cl.get("json"), report);
-	if (cl.has("write-aligned")) writeTum(cl.get("write-aligned"), alignedEstimate(report));
+	const eval::EvalReport& report = runs.front().report;
+	if (cl.has("json")) eval::writeJson(cl.get("json"), report);
+	if (cl.has("write-aligned")) writeTum(cl.get("write-aligned"), eval::alignedEstimate(report));
 	return 0;
 }
 }  // namespace

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace vlo
+namespace vlo::eval
 {
 namespace
 {
@@ -71,4 +71,4 @@ Association associate(const Trajectory& gt, const Trajectory& est, const Associa
 	}
 	return a;
 }
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace vlo
+namespace vlo::eval
 {
 namespace
 {
@@ -120,4 +120,4 @@ std::vector<double> ateErrors(const Trajectory& gt, const Trajectory& est, const
 		e[i] = (gt[i].pose.translation() - alignment * Eigen::Vector3d(est[i].pose.translation())).norm();
 	return e;
 }
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -2,7 +2,7 @@
 #include <vlo/eval/camera_frame.h>
 #include <vlo/io/kitti_calib.h>
 
-namespace vlo
+namespace vlo::eval
 {
 Eigen::Isometry3d parseCam0TVehicle(const std::string& text, const std::string& where)
 {
@@ -14,4 +14,4 @@ Eigen::Isometry3d readKittiCalibTr(const std::string& path)
 	// Unlike the importer, no nominal fallback: a metric in the wrong frame would pass unnoticed.
 	return rigidFromRowMajor(KittiCalibFile(path).get("Tr", 12), path + ": Tr");
 }
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <sstream>
 
-namespace vlo
+namespace vlo::eval
 {
 namespace
 {
@@ -139,4 +139,4 @@ std::vector<std::string> plausibilityWarnings(const EvalReport& r)
 	}
 	return w;
 }
-}  // namespace vlo
+}  // namespace vlo::eval

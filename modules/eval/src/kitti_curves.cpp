@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace vlo
+namespace vlo::eval
 {
 namespace
 {
@@ -37,4 +37,4 @@ KittiCurves kittiCurves(const KittiResult& r, const KittiOptions& opts)
 		addPoint(c.by_speed, speed, r, [&](const KittiSegment& s) { return std::abs(s.speed - speed) < 2.0; });
 	return c;
 }
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace vlo
+namespace vlo::eval
 {
 namespace
 {
@@ -83,4 +83,4 @@ KittiResult kittiMetric(const Trajectory& gt, const Trajectory& est, const Kitti
 	}
 	return r;
 }
-}  // namespace vlo
+}  // namespace vlo::eval

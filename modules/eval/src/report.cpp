@@ -10,7 +10,7 @@
 #include <optional>
 #include <sstream>
 
-namespace vlo
+namespace vlo::eval
 {
 namespace
 {
@@ -148,4 +148,4 @@ std::string formatTable(const EvalReport& r)
 		row("RPE", "n/a: " + r.rpe_note);
 	return o.str();
 }
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace vlo
+namespace vlo::eval
 {
 RpeResult computeRpe(const Trajectory& gt, const Trajectory& est)
 {
@@ -41,4 +41,4 @@ RpeResult computeRpe(const Trajectory& gt, const Trajectory& est)
 	}
 	return r;
 }
-}  // namespace vlo
+}  // namespace vlo::eval

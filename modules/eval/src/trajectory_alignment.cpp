@@ -4,7 +4,7 @@
 
 #include <vector>
 
-namespace vlo
+namespace vlo::eval
 {
 std::optional<Sim3> sim3ToGroundTruth(const Trajectory& gt, const Trajectory& est)
 {
@@ -25,4 +25,4 @@ Trajectory transformed(Trajectory traj, const Sim3& S)
 	}
 	return traj;
 }
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -4,7 +4,7 @@
 #include <Eigen/SVD>
 #include <stdexcept>
 
-namespace vlo
+namespace vlo::eval
 {
 Sim3 umeyama(const std::vector<Eigen::Vector3d>& src, const std::vector<Eigen::Vector3d>& dst, bool with_scale)
 {
@@ -55,4 +55,4 @@ Sim3 umeyama(const std::vector<Eigen::Vector3d>& src, const std::vector<Eigen::V
 	T.t = mu_d - T.s * T.R * mu_s;
 	return T;
 }
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -13,6 +13,7 @@
 #include "eval_test_utils.h"
 
 using namespace vlo;
+using namespace vlo::eval;
 namespace fs = std::filesystem;
 
 namespace

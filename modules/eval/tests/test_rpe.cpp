@@ -6,6 +6,7 @@
 #include "eval_test_utils.h"
 
 using namespace vlo;
+using namespace vlo::eval;
 using namespace vlo::test;
 
 TEST(Rpe, StepTooLongByTenCentimetres)

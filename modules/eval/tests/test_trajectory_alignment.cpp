@@ -5,6 +5,7 @@
 #include <vlo/eval/trajectory_alignment.h>
 
 using namespace vlo;
+using namespace vlo::eval;
 using namespace vlo::test;
 
 TEST(TrajectoryAlignment, UnscaledPathLandsOnTheGroundTruth)

@@ -5,6 +5,7 @@
 #include <random>
 
 using namespace vlo;
+using namespace vlo::eval;
 
 namespace
 {

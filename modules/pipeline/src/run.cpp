@@ -121,7 +121,7 @@ RunSummary runPipeline(const RunRequest& req)
 	// Every input is read and checked before the first frame: a bad one found at the end would cost the run.
 	if (!req.gt.empty()) readTum(req.gt);
 	std::optional<Eigen::Isometry3d> cam0_T_vehicle;
-	if (!req.kitti_calib.empty()) cam0_T_vehicle = readKittiCalibTr(req.kitti_calib);
+	if (!req.kitti_calib.empty()) cam0_T_vehicle = eval::readKittiCalibTr(req.kitti_calib);
 
 	RawlogReaderOptions ropt;
 	ropt.camera_label = popt.camera_label;

@@ -41,15 +41,15 @@ std::string accuracyText(const std::string& dir, const RunSummary& s, const RunR
 {
 	const std::string traj = dir + "/" + s.final_trajectory;
 	if (req.gt.empty() || !std::filesystem::exists(traj)) return {};
-	EvalOptions o;
+	eval::EvalOptions o;
 	o.gt_name = req.gt;
 	o.est_name = s.final_trajectory;
-	o.align = s.mode == "vo" ? Alignment::Sim3 : Alignment::SE3;  // the VO alone is unscaled
+	o.align = s.mode == "vo" ? eval::Alignment::Sim3 : eval::Alignment::SE3;  // the VO alone is unscaled
 	try
 	{
-		const EvalReport r = evaluate(readTum(req.gt), readTum(traj), o);
+		const eval::EvalReport r = evaluate(readTum(req.gt), readTum(traj), o);
 		if (plots) writeEvalPlots(dir + "/snapshots", {{s.mode, r}});
-		return "```\n" + formatTable(r) + "```\n";
+		return "```\n" + eval::formatTable(r) + "```\n";
 	}
 	catch (const std::exception& e)  // e.g. a ground truth of another drive: the run itself is fine
 	{

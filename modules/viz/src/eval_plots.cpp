@@ -19,7 +19,7 @@ constexpr double kKmhPerMs = 3.6;
 enum class Error { Translation, Rotation };
 enum class Axis { Length, Speed };
 
-PlotSpec devkitPlot(const std::vector<EvalRun>& runs, const std::vector<KittiCurves>& curves, Error e, Axis x)
+PlotSpec devkitPlot(const std::vector<EvalRun>& runs, const std::vector<eval::KittiCurves>& curves, Error e, Axis x)
 {
 	PlotSpec p;
 	const bool t = e == Error::Translation, len = x == Axis::Length;
@@ -64,9 +64,9 @@ std::string metres(double v)
 
 std::vector<PlotSpec> kittiErrorPlots(const std::vector<EvalRun>& runs)
 {
-	std::vector<KittiCurves> curves;
+	std::vector<eval::KittiCurves> curves;
 	for (const auto& r : runs)
-		curves.push_back(r.report.kitti ? kittiCurves(*r.report.kitti, r.report.options.kitti_options) : KittiCurves{});
+		curves.push_back(r.report.kitti ? eval::kittiCurves(*r.report.kitti, r.report.options.kitti_options) : eval::KittiCurves{});
 	std::vector<PlotSpec> plots;
 	for (const Axis x : {Axis::Length, Axis::Speed})
 		for (const Error e : {Error::Translation, Error::Rotation})
@@ -98,13 +98,13 @@ std::vector<std::string> writeEvalPlots(const std::string& dir, const std::vecto
 	}
 	for (const auto& run : runs)
 	{
-		const EvalReport& r = run.report;
+		const eval::EvalReport& r = run.report;
 		if (!r.ate) continue;
-		const NamedTrajectory est{run.name, alignedEstimate(r), {}};
+		const NamedTrajectory est{run.name, eval::alignedEstimate(r), {}};
 		TopDownStyle style;
-		style.values = ateErrors(r.association.gt, est.traj, Sim3{});  // already aligned
+		style.values = eval::ateErrors(r.association.gt, est.traj, Sim3{});  // already aligned
 		style.value_label = "ATE [m]";
-		style.title = run.name + ": ATE after " + toString(r.options.align) + " alignment, RMSE " +
+		style.title = run.name + ": ATE after " + eval::toString(r.options.align) + " alignment, RMSE " +
 			metres(r.ate->ate_rmse_m) + ", max " + metres(r.ate->ate_max_m);
 		const std::string file = atePlotFile(run.name);
 		renderTopDown({est}, &r.association.gt, dir + "/" + file, style);

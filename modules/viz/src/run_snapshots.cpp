@@ -24,9 +24,9 @@ Trajectory groundTruthOf(const RunSnapshots& run)
 /// Mode vo alone: the VO's path is in map units.
 void presentUnscaledVo(NamedTrajectory& vo, const Trajectory& gt, TopDownStyle& style)
 {
-	if (const auto S = sim3ToGroundTruth(gt, vo.traj))
+	if (const auto S = eval::sim3ToGroundTruth(gt, vo.traj))
 	{
-		vo.traj = transformed(std::move(vo.traj), *S);
+		vo.traj = eval::transformed(std::move(vo.traj), *S);
 		vo.name += " (Sim(3)-aligned to the ground truth)";
 		style.title += ", VO unscaled: Sim(3)-aligned to the ground truth";
 		return;

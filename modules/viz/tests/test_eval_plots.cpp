@@ -30,8 +30,8 @@ Trajectory straight(double s)
 std::vector<EvalRun> twoRuns()
 {
 	const Trajectory gt = straight(1);
-	EvalOptions o;
-	return {{"five percent", evaluate(gt, straight(1.05), o)}, {"two percent", evaluate(gt, straight(1.02), o)}};
+	eval::EvalOptions o;
+	return {{"five percent", eval::evaluate(gt, straight(1.05), o)}, {"two percent", evaluate(gt, straight(1.02), o)}};
 }
 }  // namespace
 
@@ -86,7 +86,7 @@ TEST(EvalPlots, ShortDriveHasNoDevkitPlotButAnAtePlot)
 {
 	const Trajectory gt = straight(1);
 	const Trajectory shortGt(gt.begin(), gt.begin() + 50), shortEst(shortGt.begin(), shortGt.end());
-	const std::vector<EvalRun> runs{{"short/one", evaluate(shortGt, shortEst, EvalOptions{})}};
+	const std::vector<EvalRun> runs{{"short/one", eval::evaluate(shortGt, shortEst, eval::EvalOptions{})}};
 	EXPECT_TRUE(kittiErrorPlots(runs).empty());
 	const std::string dir = testing::TempDir() + "/eval_plots_short";
 	std::filesystem::remove_all(dir);

@@ -56,7 +56,7 @@ inline Run runStreet(const PinholeCamera& cam, int frames, const VoOptions& opt,
 }
 
 /// Sim(3) ATE of the estimate against the truth at the same times.
-inline AteResult ateSim3(const Trajectory& truth, const Trajectory& est)
+inline eval::AteResult ateSim3(const Trajectory& truth, const Trajectory& est)
 {
 	std::map<long, Eigen::Isometry3d> gt;
 	for (const auto& p : truth) gt[std::lround(p.t * 1e6)] = p.pose;
@@ -68,6 +68,6 @@ inline AteResult ateSim3(const Trajectory& truth, const Trajectory& est)
 		g.push_back({p.t, it->second});
 		e.push_back(p);
 	}
-	return computeAte(g, e, Alignment::Sim3);
+	return eval::computeAte(g, e, eval::Alignment::Sim3);
 }
 }  // namespace vlo::vo::test

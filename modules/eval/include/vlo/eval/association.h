@@ -6,7 +6,7 @@
 
 #include <cstddef>
 
-namespace vlo
+namespace vlo::eval
 {
 struct AssociationOptions
 {
@@ -36,4 +36,4 @@ Association associate(const Trajectory& gt, const Trajectory& est, const Associa
 
 /// Median spacing of consecutive timestamps (0 for fewer than two poses).
 double medianTimeStep(const Trajectory& traj);
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::eval
 {
 enum class Alignment
 {
@@ -43,4 +43,4 @@ AteResult computeAte(const Trajectory& gt, const Trajectory& est, Alignment alig
 
 /// Each pair's position error |g_i - alignment * p_i| (m): what ATE statistics summarise, e.g. to colour a path.
 std::vector<double> ateErrors(const Trajectory& gt, const Trajectory& est, const Sim3& alignment);
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -4,7 +4,7 @@
 #include <Eigen/Geometry>
 #include <string>
 
-namespace vlo
+namespace vlo::eval
 {
 /// 12 numbers, row-major 3x4 [R|t] of cam0_T_vehicle (KITTI's Tr), separated by spaces or commas.
 /// Throws InputError naming `where` when the count is wrong or R is not a rotation.
@@ -13,4 +13,4 @@ Eigen::Isometry3d parseCam0TVehicle(const std::string& text, const std::string& 
 /// The "Tr" of a KITTI odometry calib.txt (read with io's KittiCalibFile). Throws InputError naming
 /// the file when it cannot be read or has no valid Tr: unlike the importer, no nominal fallback.
 Eigen::Isometry3d readKittiCalibTr(const std::string& path);
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::eval
 {
 struct EvalOptions
 {
@@ -55,4 +55,4 @@ Trajectory alignedEstimate(const EvalReport& r);
 
 /// The warnings of a report (evaluate() fills EvalReport::warnings with them).
 std::vector<std::string> plausibilityWarnings(const EvalReport& r);
-}  // namespace vlo
+}  // namespace vlo::eval

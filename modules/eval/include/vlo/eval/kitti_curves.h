@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace vlo
+namespace vlo::eval
 {
 struct KittiCurvePoint
 {
@@ -26,4 +26,4 @@ struct KittiCurves
 };
 
 KittiCurves kittiCurves(const KittiResult& r, const KittiOptions& opts = {});
-}  // namespace vlo
+}  // namespace vlo::eval

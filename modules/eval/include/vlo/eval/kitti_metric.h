@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace vlo
+namespace vlo::eval
 {
 struct KittiOptions
 {
@@ -48,4 +48,4 @@ KittiResult kittiMetric(const Trajectory& gt, const Trajectory& est, const Kitti
 
 /// Cumulative distance along the positions: dist[0] = 0, dist[i] = dist[i-1] + |p_i - p_{i-1}|.
 std::vector<double> trajectoryDistances(const Trajectory& traj);
-}  // namespace vlo
+}  // namespace vlo::eval

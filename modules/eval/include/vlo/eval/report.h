@@ -4,10 +4,10 @@
 
 #include <string>
 
-namespace vlo
+namespace vlo::eval
 {
 std::string formatTable(const EvalReport& r);
 std::string toJson(const EvalReport& r);
 /// Written atomically: the file is complete or absent.
 void writeJson(const std::string& path, const EvalReport& r);
-}  // namespace vlo
+}  // namespace vlo::eval

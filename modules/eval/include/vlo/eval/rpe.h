@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-namespace vlo
+namespace vlo::eval
 {
 struct RpeResult
 {
@@ -21,4 +21,4 @@ struct RpeResult
 
 /// gt and est are pairs by index (see associate()), at least 3 of them, with full ground-truth poses.
 RpeResult computeRpe(const Trajectory& gt, const Trajectory& est);
-}  // namespace vlo
+}  // namespace vlo::eval

@@ -6,7 +6,7 @@
 
 #include <optional>
 
-namespace vlo
+namespace vlo::eval
 {
 /// The Sim(3) that best maps the estimate's positions onto the ground truth's at the same times
 /// (associate(), then umeyama() with scale); none when fewer than 3 poses pair up.
@@ -15,4 +15,4 @@ std::optional<Sim3> sim3ToGroundTruth(const Trajectory& gt, const Trajectory& es
 /// Each pose moved by S: a Sim(3) is not an isometry, so positions take the scale and orientations only
 /// the rotation.
 Trajectory transformed(Trajectory traj, const Sim3& S);
-}  // namespace vlo
+}  // namespace vlo::eval

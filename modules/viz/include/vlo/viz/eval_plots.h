@@ -13,7 +13,7 @@ namespace vlo
 struct EvalRun
 {
 	std::string name;  ///< legend name, e.g. the estimate's file name without extension
-	EvalReport report;
+	eval::EvalReport report;
 };
 
 struct PlotSpec

@@ -115,7 +115,7 @@ int run(int argc, char** argv)
 	const std::vector<double> kitti_times = cl.has("kitti-times") ? readKittiTimes(cl.get("kitti-times")) : std::vector<double>{};
 	const Trajectory gt = readInVehicleFrame(opts.gt_name, opts, kitti_times);
 	const std::vector<std::string> names = runNames(est_files);
-	std::vector<EvalRun> runs;
+	std::vector<viz::EvalRun> runs;
 	for (std::size_t i = 0; i < est_files.size(); ++i)
 	{
 		opts.est_name = est_files[i];
@@ -130,7 +130,7 @@ int run(int argc, char** argv)
 	if (cl.has("plots"))  // first: a folder that cannot be made then leaves nothing behind
 	{
 		const std::string dir = cl.get("plots");
-		const auto files = writeEvalPlots(dir, runs);
+		const auto files = viz::writeEvalPlots(dir, runs);
 		if (files.empty()) logger().logStr(mrpt::system::LVL_WARN, "--plots: nothing to plot (no KITTI segment, no ATE)");
 		else if (std::none_of(files.begin(), files.end(), [](const std::string& f) { return f.rfind("kitti_", 0) == 0; }))
 			logger().logStr(mrpt::system::LVL_WARN, "--plots: no KITTI devkit plots: " + whyNoKittiPlots(runs.front().report));

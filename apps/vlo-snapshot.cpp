@@ -85,16 +85,16 @@ void projectedFrames(
 		char name[32];
 		std::snprintf(name, sizeof(name), "/frame_%06ld.png", k);  // as vlo-run's snapshots
 		const std::string png = out + name;
-		ProjectedScanStyle style;
+		viz::ProjectedScanStyle style;
 		char t[48];
 		std::snprintf(t, sizeof t, "  (t = %.3f s)", f.t);
 		style.title = "frame " + std::to_string(k) + t;
-		timed(png, [&] { renderProjectedScan(f.image, f.scan, f.rig, png, {}, style); });
+		timed(png, [&] { viz::renderProjectedScan(f.image, f.scan, f.rig, png, {}, style); });
 	}
 }
 
 /// Every PNG asked for, into `out`.
-void draw(const CommandLine& cl, const std::vector<NamedTrajectory>& trajs, const Trajectory* gtp, const PointCloud& map,
+void draw(const CommandLine& cl, const std::vector<viz::NamedTrajectory>& trajs, const Trajectory* gtp, const PointCloud& map,
 	const std::set<long>& frames, RawlogReader* reader, const std::string& out);
 
 int run(int argc, char** argv)
@@ -122,7 +122,7 @@ int run(int argc, char** argv)
 		failInput("command line", "nothing to draw: give --traj, --gt, --map or --rawlog");
 
 	// Read every input before writing anything, so that a bad file leaves no partial output.
-	std::vector<NamedTrajectory> trajs;
+	std::vector<viz::NamedTrajectory> trajs;
 	for (size_t i = 0; i < trajFiles.size(); ++i)
 	{
 		Trajectory t = readTum(trajFiles[i]);
@@ -155,20 +155,20 @@ int run(int argc, char** argv)
 	return 0;
 }
 
-void draw(const CommandLine& cl, const std::vector<NamedTrajectory>& trajs, const Trajectory* gtp, const PointCloud& map,
+void draw(const CommandLine& cl, const std::vector<viz::NamedTrajectory>& trajs, const Trajectory* gtp, const PointCloud& map,
 	const std::set<long>& frames, RawlogReader* reader, const std::string& out)
 {
 	if (!trajs.empty() || gtp)
 	{
-		TopDownStyle style;
+		viz::TopDownStyle style;
 		style.title = cl.get("title");
-		timed(out + "/topdown.png", [&] { renderTopDown(trajs, gtp, out + "/topdown.png", style); });
+		timed(out + "/topdown.png", [&] { viz::renderTopDown(trajs, gtp, out + "/topdown.png", style); });
 	}
 	if (cl.has("map"))
 	{
-		Map3DStyle style;
+		viz::Map3DStyle style;
 		style.title = cl.get("title");
-		timed(out + "/map3d.png", [&] { renderMap3D(map, trajs, gtp, out + "/map3d.png", style); });
+		timed(out + "/map3d.png", [&] { viz::renderMap3D(map, trajs, gtp, out + "/map3d.png", style); });
 	}
 	if (reader) projectedFrames(*reader, cl.get("rawlog"), frames, out);
 }

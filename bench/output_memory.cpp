@@ -81,9 +81,9 @@ int main(int argc, char** argv)
 	const double handOver = peakAbove([&] { outputs = map.takePoints(); });
 	const double pcd = peakAbove([&] { writePcd(dir + "/bench_output_memory.pcd", outputs); });
 	const double png = peakAbove([&] {
-		Map3DStyle style;
+		viz::Map3DStyle style;
 		style.title = "bench_output_memory";
-		renderMap3D(outputs, {{"path", path, std::nullopt}}, nullptr, dir + "/bench_output_memory.png", style);
+		viz::renderMap3D(outputs, {{"path", path, std::nullopt}}, nullptr, dir + "/bench_output_memory.png", style);
 	});
 	std::printf("| map points | RSS with the map [MB] | + hand-over to the outputs | + map.pcd | + map3d.png |\n");
 	std::printf("|---:|---:|---:|---:|---:|\n");

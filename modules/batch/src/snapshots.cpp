@@ -12,7 +12,7 @@ namespace
 {
 bool drawSequence(const Sequence& s, const std::vector<RunResult>& results, const std::string& png)
 {
-	std::vector<NamedTrajectory> trajs;
+	std::vector<viz::NamedTrajectory> trajs;
 	for (const auto& r : results)
 	{
 		if (r.sequence != s.name) continue;
@@ -27,9 +27,9 @@ bool drawSequence(const Sequence& s, const std::vector<RunResult>& results, cons
 	if (trajs.empty()) return false;
 	Trajectory gt;
 	if (std::filesystem::is_regular_file(s.gt)) gt = readTum(s.gt);
-	TopDownStyle style;
+	viz::TopDownStyle style;
 	style.title = s.name + ": " + std::to_string(trajs.size()) + " trajectories";
-	renderTopDown(trajs, gt.empty() ? nullptr : &gt, png, style);
+	viz::renderTopDown(trajs, gt.empty() ? nullptr : &gt, png, style);
 	return true;
 }
 }  // namespace

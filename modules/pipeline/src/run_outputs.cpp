@@ -74,7 +74,7 @@ RunSummary RunOutputs::write(const std::string& dir, const std::string& effectiv
 
 void writeSnapshots(const std::string& dir, const RunOutputs& o, const MotionSource* motion, const std::string& gtPath)
 {
-	RunSnapshots run;
+	viz::RunSnapshots run;
 	run.mode = o.plan.name;
 	run.frames = o.table.rows();
 	if (!o.lidar.empty()) run.trajectories.push_back({o.plan.lidar_label, o.lidar, std::nullopt});
@@ -84,7 +84,7 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const MotionSou
 	run.t_first = t.front(), run.t_last = t.back();
 	try
 	{
-		renderRunSnapshots(dir, std::move(run), o.map, o.sample_frames.items());
+		viz::renderRunSnapshots(dir, std::move(run), o.map, o.sample_frames.items());
 		if (motion) motion->writeSnapshots(dir);
 	}
 	catch (const InputError&)

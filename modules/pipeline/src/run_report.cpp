@@ -48,7 +48,7 @@ std::string accuracyText(const std::string& dir, const RunSummary& s, const RunR
 	try
 	{
 		const eval::EvalReport r = evaluate(readTum(req.gt), readTum(traj), o);
-		if (plots) writeEvalPlots(dir + "/snapshots", {{s.mode, r}});
+		if (plots) viz::writeEvalPlots(dir + "/snapshots", {{s.mode, r}});
 		return "```\n" + eval::formatTable(r) + "```\n";
 	}
 	catch (const std::exception& e)  // e.g. a ground truth of another drive: the run itself is fine
@@ -60,7 +60,7 @@ std::string accuracyText(const std::string& dir, const RunSummary& s, const RunR
 
 void writeStageTimePlot(const std::string& png, const FrameTable& table)
 {
-	std::vector<StageTimeColumn> columns;
+	std::vector<viz::StageTimeColumn> columns;
 	for (const auto& c : table.columns())
 		if (c.rfind("ms_", 0) == 0) columns.push_back({c, table.numbers(c)});
 	writeStageTimePlot(png, table.numbers("frame"), columns);

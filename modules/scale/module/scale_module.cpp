@@ -97,7 +97,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		for (const auto& snap : snapshots_.items())
 		{
 			const auto& e = snap.estimate;
-			ProjectedScanStyle ps;
+			viz::ProjectedScanStyle ps;
 			char head[96], estimate[96];
 			std::snprintf(head, sizeof(head), "frames %zu->%zu (t = %.3f s): ", snap.prev.index, snap.cur_index,
 				snap.prev.t);

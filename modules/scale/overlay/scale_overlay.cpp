@@ -11,7 +11,7 @@ constexpr std::array<Stage, 6> kLegendOrder = {
 	Stage::None, Stage::Ransac, Stage::Epipolar, Stage::Gradient, Stage::Triangulation, Stage::Tracking};
 }
 
-Rgb stageColor(Stage s)
+viz::Rgb stageColor(Stage s)
 {
 	switch (s)
 	{
@@ -39,16 +39,16 @@ const char* stageLabel(Stage s)
 	return "?";
 }
 
-ImageOverlay scaleOverlay(const ScaleEstimate& e, bool tracks)
+viz::ImageOverlay scaleOverlay(const ScaleEstimate& e, bool tracks)
 {
-	ImageOverlay o;
+	viz::ImageOverlay o;
 	std::array<int, kLegendOrder.size()> count{};
 	// Inliers last, so that they are drawn on top.
 	for (auto it = kLegendOrder.rbegin(); it != kLegendOrder.rend(); ++it)
 		for (const auto& k : e.keypoints)
 		{
 			if (k.rejected_by != *it) continue;
-			const Rgb c = stageColor(k.rejected_by);
+			const viz::Rgb c = stageColor(k.rejected_by);
 			if (tracks && k.rejected_by != Stage::Tracking) o.segments.push_back({k.prev, k.cur, c, 1});
 			o.points.push_back({k.prev, c, 4, false, 2});
 			++count[static_cast<size_t>(kLegendOrder.rend() - it - 1)];

@@ -9,7 +9,7 @@ namespace
 {
 // Okabe-Ito: a cloud of blue estimates, the cumulative factor as a bluish-green step line, vermillion correction
 // markers on top; the inliers in their own panel in reddish purple. Rejected estimates in neutral grey, underneath.
-constexpr Rgb kRejected{170, 170, 170}, kEstimate{0, 114, 178}, kCorrection{213, 94, 0}, kCumulative{0, 158, 115}, kInliers{204, 121, 167};
+constexpr viz::Rgb kRejected{170, 170, 170}, kEstimate{0, 114, 178}, kCorrection{213, 94, 0}, kCumulative{0, 158, 115}, kInliers{204, 121, 167};
 
 bool anyFinite(const std::vector<double>& v)
 {
@@ -17,9 +17,9 @@ bool anyFinite(const std::vector<double>& v)
 }
 
 /// Steps: the value holds until the next sample changes it (a factor applies from its frame on).
-Series steps(const std::string& name, const std::vector<double>& x, const std::vector<double>& y, Rgb c)
+viz::Series steps(const std::string& name, const std::vector<double>& x, const std::vector<double>& y, viz::Rgb c)
 {
-	Series s{name, {}, {}, c, false, true};
+	viz::Series s{name, {}, {}, c, false, true};
 	for (std::size_t i = 0; i < x.size(); ++i)
 	{
 		if (i > 0 && std::isfinite(y[i - 1]) && std::isfinite(y[i]) && y[i] != y[i - 1])
@@ -41,13 +41,13 @@ void ScaleHistory::add(
 	cumulative.push_back(cum > 0 ? cum : std::nan(""));
 }
 
-std::vector<SeriesPanel> scalePlotPanels(const ScaleHistory& h)
+std::vector<viz::SeriesPanel> scalePlotPanels(const ScaleHistory& h)
 {
-	SeriesPanel top, bottom;
-	Series estimate{"estimate s = LiDAR depth / visual depth", h.frame, h.estimate, kEstimate, true, false};
-	Series correction{"correction applied to the VO map", h.frame, h.correction, kCorrection, true, false};
+	viz::SeriesPanel top, bottom;
+	viz::Series estimate{"estimate s = LiDAR depth / visual depth", h.frame, h.estimate, kEstimate, true, false};
+	viz::Series correction{"correction applied to the VO map", h.frame, h.correction, kCorrection, true, false};
 	correction.marker_radius = 6;
-	Series rejected{"rejected estimate (not valid: see frames.csv)", h.frame, h.rejected, kRejected, true, false};
+	viz::Series rejected{"rejected estimate (not valid: see frames.csv)", h.frame, h.rejected, kRejected, true, false};
 	// Only what appears, so that the legend names no category the reader then looks for in vain.
 	for (auto& s : {rejected, estimate, steps("cumulative correction (product so far)", h.frame, h.cumulative, kCumulative),
 			 correction})
@@ -81,7 +81,7 @@ std::vector<SeriesPanel> scalePlotPanels(const ScaleHistory& h)
 bool renderScalePlot(const ScaleHistory& h, const std::string& png)
 {
 	if (!anyFinite(h.estimate) && !anyFinite(h.rejected) && !anyFinite(h.correction)) return false;
-	renderSeriesPanels(scalePlotPanels(h), png);
+	viz::renderSeriesPanels(scalePlotPanels(h), png);
 	return true;
 }
 }  // namespace vlo::scale

@@ -16,7 +16,7 @@ TEST(ScaleOverlay, ColoursByRejectingStageWithCountsInTheLegend)
 	add(Stage::None, 10), add(Stage::None, 20), add(Stage::Epipolar, 30), add(Stage::Tracking, 40);
 	EXPECT_EQ(scaleOverlay(e).legend[0].first, "kept 2");  // RANSAC never ran: survivors, not inliers
 	e.counts.inliers = 2;
-	const ImageOverlay o = scaleOverlay(e);
+	const viz::ImageOverlay o = scaleOverlay(e);
 	ASSERT_EQ(o.points.size(), 4u);
 	EXPECT_EQ(o.segments.size(), 3u);  // a lost keypoint has no track
 	// Inliers are drawn last (on top).

@@ -56,7 +56,7 @@ TEST(ScalePlot, EachValueIsWhereThePanelsPutIt)
 	// One x axis: frame k is on the same column in both panels.
 	EXPECT_NEAR(areas[0].toPixel(17, 1).x, areas[1].toPixel(17, 0).x, 1e-9);
 
-	const Rgb rejected = *panels[0].series[0].color, estimate = *panels[0].series[1].color,
+	const viz::Rgb rejected = *panels[0].series[0].color, estimate = *panels[0].series[1].color,
 			  cumulative = *panels[0].series[2].color, correction = *panels[0].series[3].color,
 			  inliers = *panels[1].series[0].color;
 	EXPECT_TRUE(test::colorNear(img, areas[0].toPixel(30, 1.01), rejected, 0, 10));

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace vlo
+namespace vlo::viz
 {
 double niceStep(double approx)
 {
@@ -16,9 +16,9 @@ double niceStep(double approx)
 	const double m = approx / p;  // in [1, 10)
 	return p * (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10);
 }
-}  // namespace vlo
+}  // namespace vlo::viz
 
-namespace vlo::canvas
+namespace vlo::viz::canvas
 {
 namespace
 {
@@ -129,4 +129,4 @@ cv::Point emptiestCorner(const cv::Rect& area, cv::Size size, const std::vector<
 	}
 	return best;
 }
-}  // namespace vlo::canvas
+}  // namespace vlo::viz::canvas

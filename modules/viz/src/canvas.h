@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-namespace vlo::canvas
+namespace vlo::viz::canvas
 {
 inline cv::Scalar bgr(Rgb c) { return {double(c.b), double(c.g), double(c.r)}; }
 const cv::Scalar kInk{40, 40, 40}, kGrid{228, 228, 228}, kWhite{255, 255, 255};
@@ -68,4 +68,4 @@ double colorBarStep(double vmin, double vmax, int width);
 /// Horizontal colour bar in `bar` from vmin to vmax with ticks below and `label` to the right.
 void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const std::string& label,
 	const std::function<Rgb(double)>& colormap);
-}  // namespace vlo::canvas
+}  // namespace vlo::viz::canvas

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vlo::canvas
+namespace vlo::viz::canvas
 {
 namespace
 {
@@ -114,4 +114,4 @@ void colorBar(cv::Mat& img, const cv::Rect& bar, double vmin, double vmax, const
 	}
 	text(img, label, {bar.x + bar.width + 12, bar.y + bar.height / 2}, kMedium, kInk, HAlign::Left, VAlign::Middle);
 }
-}  // namespace vlo::canvas
+}  // namespace vlo::viz::canvas

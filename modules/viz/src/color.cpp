@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-namespace vlo
+namespace vlo::viz
 {
 Rgb paletteColor(std::size_t i)
 {
@@ -28,4 +28,4 @@ Rgb turbo(double t)
 	auto u8 = [](double v) { return static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(v, 0.0, 1.0))); };
 	return {u8(r), u8(g), u8(b)};
 }
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 
-namespace vlo
+namespace vlo::viz
 {
 namespace
 {
@@ -112,4 +112,4 @@ std::vector<std::string> writeEvalPlots(const std::string& dir, const std::vecto
 	}
 	return written;
 }
-}  // namespace vlo
+}  // namespace vlo::viz

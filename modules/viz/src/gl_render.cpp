@@ -10,7 +10,7 @@
 #include <GL/gl.h>
 #include <opencv2/imgproc.hpp>
 
-namespace vlo
+namespace vlo::viz
 {
 cv::Mat renderPoints(const GlPoints& pts, const ViewCamera& cam, float pointSize)
 {
@@ -40,4 +40,4 @@ cv::Mat renderPoints(const GlPoints& pts, const ViewCamera& cam, float pointSize
 	fbo.render_RGB(scene, rgb);
 	return rgb.asCvMatRef().clone();
 }
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 struct GlPoint
 {
@@ -20,4 +20,4 @@ using GlPoints = std::vector<GlPoint>;
 
 /// Renders coloured points on white through `cam` (headless EGL). Returns a BGR image of cam's size.
 cv::Mat renderPoints(const GlPoints& pts, const ViewCamera& cam, float pointSize);
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-namespace vlo
+namespace vlo::viz
 {
 namespace
 {
@@ -45,4 +45,4 @@ std::string hersheyText(const std::string& utf8)
 	}
 	return out;
 }
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -4,7 +4,7 @@
 // (ß as ss, ° as deg) and any other character as one '?'.
 #include <string>
 
-namespace vlo
+namespace vlo::viz
 {
 std::string hersheyText(const std::string& utf8);
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vlo
+namespace vlo::viz
 {
 namespace
 {
@@ -148,4 +148,4 @@ void renderMap3D(const PointCloud& map, const std::vector<NamedTrajectory>& traj
 {
 	writePng(png, drawMap3D(map, trajs, gt, style));
 }
-}  // namespace vlo
+}  // namespace vlo::viz

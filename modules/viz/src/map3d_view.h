@@ -4,9 +4,9 @@
 
 #include "view_fit.h"
 
-namespace vlo
+namespace vlo::viz
 {
 /// The view that frames `map` and the trajectories for `style`. Throws InputError when there is nothing to draw.
 ViewCamera map3DView(const PointCloud& map, const std::vector<NamedTrajectory>& trajs, const Trajectory* gt,
 	const Map3DStyle& style = {});
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <unordered_map>
 
-namespace vlo
+namespace vlo::viz
 {
 std::vector<float> heightAbovePath(const PointCloud& pts, const Trajectory& path, double radius)
 {
@@ -47,4 +47,4 @@ std::vector<float> heightAbovePath(const PointCloud& pts, const Trajectory& path
 	}
 	return out;
 }
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -6,9 +6,9 @@
 
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 /// z of each point minus z of the horizontally nearest pose of `path`; points farther than
 /// `radius` metres from every pose are compared with the path's median z instead.
 std::vector<float> heightAbovePath(const PointCloud& pts, const Trajectory& path, double radius = 40);
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 void writePng(const std::string& path, const cv::Mat& image)
 {
@@ -20,4 +20,4 @@ void writePng(const std::string& path, const cv::Mat& image)
 	f.stream().write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
 	f.commit();
 }
-}  // namespace vlo
+}  // namespace vlo::viz

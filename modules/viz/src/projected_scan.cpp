@@ -10,7 +10,7 @@
 #include <cmath>
 #include <numeric>
 
-namespace vlo
+namespace vlo::viz
 {
 namespace
 {
@@ -171,4 +171,4 @@ void renderProjectedScan(const mrpt::img::CImage& image, const PointCloud& scan,
 {
 	writePng(png, drawProjectedScan(image, scan, rig, overlay, style));
 }
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
-namespace vlo
+namespace vlo::viz
 {
 namespace
 {
@@ -67,4 +67,4 @@ void renderRunSnapshots(const std::string& dir, RunSnapshots run, const PointClo
 	for (const auto& f : samples)
 		if (f.has_image && f.has_scan) renderSampleFrame(dir, f);
 }
-}  // namespace vlo
+}  // namespace vlo::viz

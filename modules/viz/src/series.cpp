@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vlo
+namespace vlo::viz
 {
 namespace
 {
@@ -201,4 +201,4 @@ void renderSeriesPanels(const std::vector<SeriesPanel>& panels, const std::strin
 {
 	writePng(png, drawSeriesPanels(panels));
 }
-}  // namespace vlo
+}  // namespace vlo::viz

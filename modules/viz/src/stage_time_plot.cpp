@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vlo
+namespace vlo::viz
 {
 namespace
 {
@@ -58,4 +58,4 @@ void writeStageTimePlot(const std::string& png, const std::vector<double>& frame
 	style.width = 1500;  // the plot keeps its width beside the legend
 	renderSeries(stacked, png, style);
 }
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace vlo
+namespace vlo::viz
 {
 namespace
 {
@@ -182,4 +182,4 @@ void renderTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory* 
 {
 	writePng(png, drawTopDown(trajs, gt, style));
 }
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vlo
+namespace vlo::viz
 {
 std::optional<cv::Point2d> ViewCamera::project(const Eigen::Vector3d& p) const
 {
@@ -95,4 +95,4 @@ double acrossAzimuth(const std::vector<Eigen::Vector3d>& pts)
 	// Look from the side of the major axis (minus 90 degrees), turned 30 degrees for depth cues.
 	return std::atan2(major.y(), major.x()) - M_PI / 2 + M_PI / 6;
 }
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 struct ViewCamera
 {
@@ -29,4 +29,4 @@ ViewCamera fitView(const std::vector<Eigen::Vector3d>& pts, double az, double el
 /// Azimuth that looks across the main horizontal axis of `pts` (from its right-hand side, skewed
 /// by 30 degrees) so that a long route fills the image instead of being foreshortened.
 double acrossAzimuth(const std::vector<Eigen::Vector3d>& pts);
-}  // namespace vlo
+}  // namespace vlo::viz

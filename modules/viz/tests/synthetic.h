@@ -6,7 +6,7 @@
 
 #include <mrpt/img/CImage.h>
 
-namespace vlo::synth
+namespace vlo::viz::synth
 {
 /// Ground truth: ~length metres at 5-14 m/s, 10 Hz, two 90-degree turns, gentle slopes; starts at identity.
 Trajectory curvedDrive(double length);
@@ -27,4 +27,4 @@ struct CameraLidarFrame
 CameraLidarFrame streetFrame(unsigned seed);
 /// KITTI-like rig: camera 1.65 m and LiDAR 1.73 m above the ground (vehicle frame on the road).
 SensorRig kittiLikeRig();
-}  // namespace vlo::synth
+}  // namespace vlo::viz::synth

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-namespace vlo::synth
+namespace vlo::viz::synth
 {
 namespace
 {
@@ -121,4 +121,4 @@ PointCloud streetMap(const Trajectory& gt, unsigned seed)
 	}
 	return map;
 }
-}  // namespace vlo::synth
+}  // namespace vlo::viz::synth

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-namespace vlo::synth
+namespace vlo::viz::synth
 {
 namespace
 {
@@ -125,4 +125,4 @@ CameraLidarFrame streetFrame(unsigned seed)
 	}
 	return f;
 }
-}  // namespace vlo::synth
+}  // namespace vlo::viz::synth

@@ -12,6 +12,7 @@
 #include <filesystem>
 
 using namespace vlo;
+using namespace vlo::viz;
 
 namespace
 {

@@ -20,6 +20,7 @@
 #include <random>
 
 using namespace vlo;
+using namespace vlo::viz;
 
 namespace
 {

@@ -4,6 +4,7 @@
 #include "../src/hershey_text.h"
 
 using namespace vlo;
+using namespace vlo::viz;
 
 TEST(HersheyText, AccentedLettersLoseTheirAccentsAndOtherCharactersAreOneQuestionMark)
 {

@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 using namespace vlo;
+using namespace vlo::viz;
 
 TEST(Map3D, FittedViewKeepsEveryPointInsideTheContentRectangle)
 {

@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 
 using namespace vlo;
+using namespace vlo::viz;
 
 namespace
 {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 using namespace vlo;
+using namespace vlo::viz;
 
 TEST(Series, LineAppearsWhereTheMappingSaysAndNanLeavesAGap)
 {

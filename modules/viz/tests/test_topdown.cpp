@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 using namespace vlo;
+using namespace vlo::viz;
 
 namespace
 {

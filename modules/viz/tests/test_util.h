@@ -10,13 +10,13 @@
 
 namespace vlo::test
 {
-inline double colorDistance(const cv::Vec3b& bgr, Rgb c)
+inline double colorDistance(const cv::Vec3b& bgr, viz::Rgb c)
 {
 	return std::sqrt(std::pow(bgr[0] - c.b, 2) + std::pow(bgr[1] - c.g, 2) + std::pow(bgr[2] - c.r, 2));
 }
 
 /// True when a pixel within `radius` of `at` has colour `c` (within `tol` in RGB distance).
-inline bool colorNear(const cv::Mat& img, cv::Point2d at, Rgb c, int radius = 2, double tol = 30)
+inline bool colorNear(const cv::Mat& img, cv::Point2d at, viz::Rgb c, int radius = 2, double tol = 30)
 {
 	const int x0 = int(std::lround(at.x)), y0 = int(std::lround(at.y));
 	for (int y = y0 - radius; y <= y0 + radius; ++y)

@@ -8,10 +8,10 @@
 namespace vlo::scale
 {
 /// Okabe-Ito colours, distinct from each other for colour-blind readers.
-Rgb stageColor(Stage s);
+viz::Rgb stageColor(Stage s);
 /// Short legend label of a stage ("inlier" for Stage::None; the overlay says "kept" instead when the
 /// estimate stopped before RANSAC).
 const char* stageLabel(Stage s);
 
-ImageOverlay scaleOverlay(const ScaleEstimate& e, bool tracks = true);
+viz::ImageOverlay scaleOverlay(const ScaleEstimate& e, bool tracks = true);
 }  // namespace vlo::scale

@@ -27,7 +27,7 @@ struct ScaleHistory
 };
 
 /// The two panels of scale.png (colours: Okabe-Ito, see doc/SNAPSHOTS.md).
-std::vector<SeriesPanel> scalePlotPanels(const ScaleHistory& h);
+std::vector<viz::SeriesPanel> scalePlotPanels(const ScaleHistory& h);
 /// Writes scale.png when the history holds at least one estimate or correction; returns whether it did.
 bool renderScalePlot(const ScaleHistory& h, const std::string& png);
 }  // namespace vlo::scale

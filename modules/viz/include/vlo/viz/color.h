@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace vlo
+namespace vlo::viz
 {
 struct Rgb
 {
@@ -19,4 +19,4 @@ constexpr Rgb kGroundTruthColor{90, 90, 90};
 
 /// Google's Turbo colormap, t in [0, 1] (clamped): dark blue (near/low) -> red (far/high).
 Rgb turbo(double t);
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 struct EvalRun
 {
@@ -34,4 +34,4 @@ std::string atePlotFile(const std::string& run_name);
 /// Writes the devkit plots and, for each run with an ATE, its coloured top-down view into `dir`
 /// (created when missing), each PNG complete or absent. Returns the file names written, in order.
 std::vector<std::string> writeEvalPlots(const std::string& dir, const std::vector<EvalRun>& runs);
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 struct Map3DStyle
 {
@@ -33,4 +33,4 @@ cv::Mat drawMap3D(const PointCloud& map, const std::vector<NamedTrajectory>& tra
 	const Map3DStyle& style = {});
 void renderMap3D(const PointCloud& map, const std::vector<NamedTrajectory>& trajs, const Trajectory* gt,
 	const std::string& png, const Map3DStyle& style = {});
-}  // namespace vlo
+}  // namespace vlo::viz

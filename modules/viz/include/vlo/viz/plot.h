@@ -2,7 +2,7 @@
 // World -> pixel mapping of a 2D plot, exposed so that callers and tests can place and find things.
 #include <opencv2/core/types.hpp>
 
-namespace vlo
+namespace vlo::viz
 {
 struct PlotArea
 {
@@ -19,4 +19,4 @@ struct PlotArea
 
 /// A round step (1, 2 or 5 times a power of ten) nearest to `approx` (> 0).
 double niceStep(double approx);
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -5,8 +5,8 @@
 
 #include <string>
 
-namespace vlo
+namespace vlo::viz
 {
 /// Writes an 8-bit BGR or grayscale image. Throws InputError naming the path on failure.
 void writePng(const std::string& path, const cv::Mat& image);
-}  // namespace vlo
+}  // namespace vlo::viz

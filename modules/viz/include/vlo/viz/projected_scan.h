@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 struct OverlayPoint
 {
@@ -63,4 +63,4 @@ cv::Mat drawProjectedScan(const mrpt::img::CImage& image, const PointCloud& scan
 	const ImageOverlay& overlay = {}, const ProjectedScanStyle& style = {});
 void renderProjectedScan(const mrpt::img::CImage& image, const PointCloud& scan, const SensorRig& rig,
 	const std::string& png, const ImageOverlay& overlay = {}, const ProjectedScanStyle& style = {});
-}  // namespace vlo
+}  // namespace vlo::viz

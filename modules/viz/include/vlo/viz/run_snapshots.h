@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 struct RunSnapshots
 {
@@ -24,4 +24,4 @@ struct RunSnapshots
 /// the ground truth when there is one, and says so; without one, the legend and title say "unscaled" and
 /// lengths and axes are in map units. Throws InputError for a bad gt_path.
 void renderRunSnapshots(const std::string& dir, RunSnapshots run, const PointCloud& map, const std::vector<Frame>& samples);
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 struct Series
 {
@@ -55,4 +55,4 @@ void renderSeries(const std::vector<Series>& series, const std::string& png, con
 std::vector<PlotArea> seriesPanelAreas(const std::vector<SeriesPanel>& panels);
 cv::Mat drawSeriesPanels(const std::vector<SeriesPanel>& panels);
 void renderSeriesPanels(const std::vector<SeriesPanel>& panels, const std::string& png);
-}  // namespace vlo
+}  // namespace vlo::viz

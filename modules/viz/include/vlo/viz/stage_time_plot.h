@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 /// One frames.csv time column (e.g. "ms_vo_extract") with its value per frame (NaN: the stage did not run).
 struct StageTimeColumn
@@ -17,4 +17,4 @@ struct StageTimeColumn
 /// `columns` are the ms_* columns in frames.csv's order, ms_total among them. Nothing when there is no stage.
 void writeStageTimePlot(const std::string& png, const std::vector<double>& frame,
 	const std::vector<StageTimeColumn>& columns);
-}  // namespace vlo
+}  // namespace vlo::viz

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::viz
 {
 struct NamedTrajectory
 {
@@ -40,4 +40,4 @@ PlotArea topDownArea(const std::vector<NamedTrajectory>& trajs, const Trajectory
 cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory* gt, const TopDownStyle& style = {});
 void renderTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory* gt, const std::string& png,
 	const TopDownStyle& style = {});
-}  // namespace vlo
+}  // namespace vlo::viz

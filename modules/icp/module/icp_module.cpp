@@ -15,8 +15,8 @@ class IcpModule : public LidarOdometryModule
 		odometry_ = std::make_unique<icp::IcpOdometry>(opt_);
 	}
 
-	Eigen::Isometry3d process(
-		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> /*prepared*/,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
 	{
 		mount_.observe(frame);
 		const auto r = odometry_->process(frame.t, frame.scan, mount_.lidarMotion(vehicle_motion));

@@ -8,6 +8,13 @@ namespace vlo
 {
 namespace
 {
+/// The scan's rings and features, extracted ahead of its turn.
+struct PreparedLoamScan : PreparedScan
+{
+	explicit PreparedLoamScan(loam::ScanFeatures f) : features(std::move(f)) {}
+	loam::ScanFeatures features;
+};
+
 class AloamModule : public LidarOdometryModule
 {
    public:
@@ -23,19 +30,19 @@ class AloamModule : public LidarOdometryModule
 	}
 
 	// The scan's rings and features (its own extractor: prepare and process may run on two threads).
-	void prepare(Frame& frame) override
+	std::unique_ptr<PreparedScan> prepare(const Frame& frame) override
 	{
-		frame.lidar_prepared = std::make_shared<loam::ScanFeatures>(ahead_->extract(frame.scan));
+		return std::make_unique<PreparedLoamScan>(ahead_->extract(frame.scan));
 	}
 
-	Eigen::Isometry3d process(
-		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
 	{
 		mount_.observe(frame);
 		ring_check_->observe(frame.scan);
 		const auto motion = mount_.lidarMotion(vehicle_motion);
-		const auto* ahead = std::any_cast<std::shared_ptr<loam::ScanFeatures>>(&frame.lidar_prepared);
-		const auto r = ahead && *ahead ? lo_->process(frame.t, std::move(**ahead), motion) : lo_->process(frame.t, frame.scan, motion);
+		auto* ahead = dynamic_cast<PreparedLoamScan*>(prepared.get());
+		const auto r = ahead ? lo_->process(frame.t, std::move(ahead->features), motion) : lo_->process(frame.t, frame.scan, motion);
 
 		table.set("lo_status", std::string(toString(r.status)));
 		table.set("lo_prior", r.prior_source);

@@ -55,9 +55,9 @@ std::pair<Eigen::Isometry3d, std::string> run(const Drive& d, const std::optiona
 	config.checkAllKeysUsed();
 	FrameTable table;
 	table.newRow();
-	lo->process(d.a, std::nullopt, table);
+	lo->process(d.a, nullptr, std::nullopt, table);
 	table.newRow();
-	const Eigen::Isometry3d pose = lo->process(d.b, guess, table);
+	const Eigen::Isometry3d pose = lo->process(d.b, nullptr, guess, table);
 	return {pose, table.cell(1, "lo_prior")};
 }
 }  // namespace

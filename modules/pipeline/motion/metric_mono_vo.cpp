@@ -1,7 +1,7 @@
 // Motion source "metric_mono" (the paper's front end): a monocular VO kept metric by a scale
 // corrector. Per frame the VO tracks, the corrector estimates the scale of its motion from the
-// previous frame's scan and rescales the VO's map through the VO, and the metric path turns the
-// result into the vehicle's motion in metres. The rescaling feedback stays inside this class.
+// previous frame's scan and decides on a correction, which this class applies to the VO's map
+// before the next frame, and the metric path turns the result into the vehicle's motion in metres.
 #include "metric_vo_path.h"
 
 #include <vlo/core/error.h>
@@ -9,6 +9,8 @@
 #include <vlo/kernel/motion_source.h>
 #include <vlo/kernel/scale_correction.h>
 #include <vlo/kernel/visual_odometry.h>
+
+#include <stdexcept>
 
 namespace vlo
 {
@@ -31,18 +33,18 @@ class MetricMonoVo : public MotionSource
 		scale_->configure(config, setup.snapshot_every);
 	}
 
-	std::optional<Eigen::Isometry3d> process(const Frame& frame, FrameTable& table) override
+	std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, FrameTable& table) override
 	{
 		auto t0 = SteadyClock::now();
-		vo_->process(frame, table);
+		const VisualOdometryStep step = vo_->process(*frame, table);
 		table.set("ms_vo", lapMs(t0), 2);
-		const MonocularState state = vo_->monocular();
-		const auto rescale = [this](double factor, bool whole_map) { return vo_->rescale(factor, whole_map); };
-		const ScaleApplied applied = scale_->process(prev_ ? &*prev_ : nullptr, frame, state, rescale, table);
-		if (!path_) path_.emplace(frame.rig.vehicle_T_camera);
-		const auto motion = path_->update(frame.t, state, applied);
-		prev_ = frame;
-		prev_->image = frame.image.makeDeepCopy();  // the reader may reuse the image buffer
+		const ScaleCorrection correction = scale_->process(prev_.get(), *frame, step, table);
+		// A correction comes only for a frame tracked in a map, which the VO can scale.
+		if (correction.apply() && !vo_->rescale(correction.factor, correction.kind == ScaleCorrection::Kind::Initial))
+			throw std::logic_error("frame " + std::to_string(frame->index) + ": the VO had no map to scale");
+		if (!path_) path_.emplace(frame->rig.vehicle_T_camera);
+		const auto motion = path_->update(frame->t, step, correction);
+		prev_ = std::move(frame);
 		return motion;
 	}
 
@@ -55,7 +57,7 @@ class MetricMonoVo : public MotionSource
 	std::unique_ptr<MonocularVisualOdometry> vo_;
 	std::unique_ptr<ScaleCorrectionModule> scale_;
 	std::optional<MetricVoPath> path_;
-	std::optional<Frame> prev_;
+	std::shared_ptr<const Frame> prev_;  ///< the previous frame, shared with the run loop
 };
 VLO_REGISTER_MODULE(MotionSource, "metric_mono", MetricMonoVo);
 }  // namespace

@@ -17,7 +17,8 @@ void MetricVoPath::push(double t, const Eigen::Isometry3d& camera_pose)
 	path_.push_back({t, toVehicle(camera_pose)});
 }
 
-std::optional<Eigen::Isometry3d> MetricVoPath::update(double t, const MonocularState& step, const ScaleApplied& applied)
+std::optional<Eigen::Isometry3d> MetricVoPath::update(
+	double t, const VisualOdometryStep& step, const ScaleCorrection& correction)
 {
 	if (step.new_map)
 	{
@@ -30,18 +31,18 @@ std::optional<Eigen::Isometry3d> MetricVoPath::update(double t, const MonocularS
 	if (!metric_)
 	{
 		pending_.emplace_back(t, *step.camera_map_pose);
-		if (!applied.initial) return std::nullopt;
+		if (correction.kind != ScaleCorrection::Kind::Initial) return std::nullopt;
 		// The map's first scale multiplies the whole map about its frame: so do its frames so far.
-		for (const auto& [tp, mapPose] : pending_) push(tp, origin_ * scaled(mapPose, applied.factor));
+		for (const auto& [tp, mapPose] : pending_) push(tp, origin_ * scaled(mapPose, correction.factor));
 		pending_.clear();
 		metric_ = true;
 	}
 	else
 	{
 		if (!step.camera_motion || !last_) return std::nullopt;
-		push(t, *last_ * scaled(*step.camera_motion, applied.factor));
+		push(t, *last_ * scaled(*step.camera_motion, correction.factor));
 	}
 	if (!step.camera_motion) return std::nullopt;
-	return toVehicle(scaled(*step.camera_motion, applied.factor));
+	return toVehicle(scaled(*step.camera_motion, correction.factor));
 }
 }  // namespace vlo

@@ -3,7 +3,7 @@
 // trajectory continuous through rescaling, so its early segments stay in the units they were made
 // in; this path instead chains each frame's camera motion once it is metric, and re-expresses the
 // frames of a fresh map in metres when its first scale arrives.
-#include <vlo/io/trajectory.h>
+#include <vlo/core/trajectory.h>
 #include <vlo/kernel/scale_correction.h>
 #include <vlo/kernel/visual_odometry.h>
 
@@ -18,9 +18,10 @@ class MetricVoPath
    public:
 	explicit MetricVoPath(const Eigen::Isometry3d& vehicle_T_camera) : Tvc_(vehicle_T_camera) {}
 
-	/// Call once per frame, after the scale corrector acted on this frame. Returns the metric motion
-	/// of the vehicle since the previous frame (LOAM's initial guess) when it is known.
-	std::optional<Eigen::Isometry3d> update(double t, const MonocularState& step, const ScaleApplied& applied);
+	/// Call once per frame with the VO's step and the scale corrector's decision at that frame (which
+	/// the VO's map takes before the next). Returns the metric motion of the vehicle since the
+	/// previous frame (the LiDAR odometry's initial guess) when it is known.
+	std::optional<Eigen::Isometry3d> update(double t, const VisualOdometryStep& step, const ScaleCorrection& correction);
 
 	/// Vehicle poses relative to the vehicle where the first map began, metres.
 	const Trajectory& trajectory() const { return path_; }

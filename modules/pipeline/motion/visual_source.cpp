@@ -18,13 +18,15 @@ class VisualSource : public MotionSource
 		vo_->useThreads(setup.threads);
 	}
 
-	std::optional<Eigen::Isometry3d> process(const Frame& frame, FrameTable& table) override
+	std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, FrameTable& table) override
 	{
 		auto t0 = SteadyClock::now();
-		const VisualOdometryStep step = vo_->process(frame, table);
+		const VisualOdometryStep step = vo_->process(*frame, table);
 		table.set("ms_vo", lapMs(t0), 2);
-		if (step.pose) path_.push_back({frame.t, *step.pose});
-		return step.motion;
+		mount_.observe(*frame);
+		if (step.camera_pose) path_.push_back({frame->t, mount_.vehicle(*step.camera_pose, step.metric)});
+		if (!step.camera_motion) return std::nullopt;
+		return mount_.vehicle(*step.camera_motion, step.metric);
 	}
 
 	Trajectory trajectory() const override { return path_; }
@@ -32,6 +34,7 @@ class VisualSource : public MotionSource
 
    private:
 	std::unique_ptr<VisualOdometryModule> vo_;
+	CameraMount mount_;
 	Trajectory path_;
 };
 VLO_REGISTER_MODULE(MotionSource, "visual", VisualSource);

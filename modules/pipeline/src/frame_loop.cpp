@@ -14,9 +14,8 @@ namespace vlo
 namespace
 {
 /// A frame between its motion source and its LiDAR odometry.
-struct FrameInFlight
+struct FrameInFlight : ReadFrame
 {
-	Frame frame;
 	std::optional<Eigen::Isometry3d> motion;  ///< of the vehicle since the previous frame
 	FrameTable motion_row;  ///< the motion source's columns
 	double ms = 0;  ///< spent in the motion source
@@ -31,30 +30,29 @@ void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions
 	// The LiDAR odometry's work on a frame alone (LOAM's features) runs where the frame is read:
 	// with two threads beside both stages, which leaves the stages more even.
 	const auto prepare = [&stages, &times](Frame& f) {
-		const auto t0 = SteadyClock::now();
 		applyPointTimes(f.scan, times);
-		stages.lidar->prepare(f);
-		f.lidar_prepared_ms = msSince(t0);
+		return stages.lidar->prepare(f);
 	};
 	FramePrefetcher frames(reader, threaded ? 2 : 0, std::size_t(popt.max_frames),
-		stages.lidar ? std::function<void(Frame&)>(prepare) : nullptr);
+		stages.lidar ? FramePrefetcher::Prepare(prepare) : nullptr);
 
 	// Each frame's motion source, then its LiDAR odometry and its row of the table. With two threads
 	// the LiDAR odometry runs on the worker, up to kAhead frames behind the motion source: the
 	// motion source never reads the LiDAR odometry's results (it takes only the frame), so the order of each
 	// module's calls, and with it every output, is the same as with one thread.
 	constexpr std::size_t kAhead = 3;
-	const auto lidarAndRow = [&](const FrameInFlight& done) {
+	const auto lidarAndRow = [&](FrameInFlight& done) {
 		FrameTable lidarRow;
 		std::optional<Eigen::Isometry3d> pose;
 		double lidarMs = 0;
 		if (stages.lidar)
 		{
 			const auto t0 = SteadyClock::now();
-			pose = stages.lidar->process(done.frame, plan.bootstrapping ? done.motion : std::nullopt, lidarRow);
+			pose = stages.lidar->process(
+				done.frame, std::move(done.prepared), plan.bootstrapping ? done.motion : std::nullopt, lidarRow);
 			if (popt.map_every > 0 && done.frame.index % popt.map_every == 0)
 				map.insert(done.frame.scan, *pose * done.frame.rig.vehicle_T_lidar);
-			lidarMs = done.frame.lidar_prepared_ms + msSince(t0);
+			lidarMs = done.prepared_ms + msSince(t0);
 		}
 		auto& table = outputs.table;
 		table.newRow();
@@ -83,7 +81,7 @@ void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions
 		bool more = false;
 		try
 		{
-			more = frames.next(cur->frame);
+			more = frames.next(*cur);
 		}
 		catch (const InputError& e)
 		{
@@ -97,7 +95,8 @@ void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions
 			{
 				const auto t0 = SteadyClock::now();
 				undistorter.apply(cur->frame);
-				cur->motion = stages.motion->process(cur->frame, cur->motion_row);
+				// Shared with the motion source, which may keep it for the next frame.
+				cur->motion = stages.motion->process(std::shared_ptr<const Frame>(cur, &cur->frame), cur->motion_row);
 				cur->ms = msSince(t0);
 			}
 			catch (...)

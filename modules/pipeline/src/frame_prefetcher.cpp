@@ -1,8 +1,9 @@
+#include <vlo/core/stopwatch.h>
 #include <vlo/pipeline/frame_prefetcher.h>
 
 namespace vlo
 {
-FramePrefetcher::FramePrefetcher(RawlogReader& reader, std::size_t ahead, std::size_t limit, std::function<void(Frame&)> prepare)
+FramePrefetcher::FramePrefetcher(RawlogReader& reader, std::size_t ahead, std::size_t limit, Prepare prepare)
 	: reader_(reader), ahead_(ahead), limit_(limit), prepare_(std::move(prepare))
 {
 	if (ahead_ > 0) thread_ = std::thread([this] { readAhead(); });
@@ -20,19 +21,24 @@ void FramePrefetcher::stop()
 	if (thread_.joinable()) thread_.join();
 }
 
-bool FramePrefetcher::readOne(Frame& frame)
+bool FramePrefetcher::readOne(ReadFrame& read)
 {
 	if (limit_ > 0 && read_ >= limit_) return false;
-	if (!reader_.next(frame)) return false;
+	if (!reader_.next(read.frame)) return false;
 	++read_;
 	progress_ = reader_.progress();
-	if (prepare_) prepare_(frame);
+	if (prepare_)
+	{
+		const auto t0 = SteadyClock::now();
+		read.prepared = prepare_(read.frame);
+		read.prepared_ms = msSince(t0);
+	}
 	return true;
 }
 
-bool FramePrefetcher::next(Frame& frame)
+bool FramePrefetcher::next(ReadFrame& read)
 {
-	if (ahead_ == 0) return readOne(frame);
+	if (ahead_ == 0) return readOne(read);
 	std::unique_lock<std::mutex> lock(mutex_);
 	changed_.wait(lock, [this] { return !queue_.empty() || finished_; });
 	if (queue_.empty())
@@ -40,7 +46,7 @@ bool FramePrefetcher::next(Frame& frame)
 		if (error_) std::rethrow_exception(error_);
 		return false;
 	}
-	frame = std::move(queue_.front());
+	read = std::move(queue_.front());
 	queue_.pop_front();
 	lock.unlock();
 	changed_.notify_all();
@@ -51,12 +57,12 @@ void FramePrefetcher::readAhead()
 {
 	for (;;)
 	{
-		Frame frame;
+		ReadFrame read;
 		bool more = false;
 		std::exception_ptr error;
 		try
 		{
-			more = readOne(frame);
+			more = readOne(read);
 		}
 		catch (...)
 		{
@@ -73,7 +79,7 @@ void FramePrefetcher::readAhead()
 		}
 		changed_.wait(lock, [this] { return queue_.size() < ahead_ || stopping_; });
 		if (stopping_) return;
-		queue_.push_back(std::move(frame));
+		queue_.push_back(std::move(read));
 		lock.unlock();
 		changed_.notify_all();
 	}

@@ -42,8 +42,8 @@ class Prefetcher : public ::testing::Test
 		try
 		{
 			FramePrefetcher frames(reader, ahead, limit);
-			for (Frame f; frames.next(f);)
-				r.frames.emplace_back(f.index, f.scan.at(0).x, int(f.image.at<std::uint8_t>(0, 0)));
+			for (ReadFrame f; frames.next(f);)
+				r.frames.emplace_back(f.frame.index, f.frame.scan.at(0).x, int(f.frame.image.at<std::uint8_t>(0, 0)));
 			frames.stop();
 		}
 		catch (const InputError& e)
@@ -96,7 +96,7 @@ TEST_F(Prefetcher, StoppingEarlyEndsTheReaderThread)
 {
 	RawlogReader reader(path());
 	FramePrefetcher frames(reader, 1, 0);
-	Frame f;
+	ReadFrame f;
 	ASSERT_TRUE(frames.next(f));
 	frames.stop();  // the thread waits for room in the queue: stop must not hang
 	EXPECT_LE(reader.stats().frames, 3u);

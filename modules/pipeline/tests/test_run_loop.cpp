@@ -56,18 +56,15 @@ class FakeMonoVo : public MonocularVisualOdometry
 	{
 		++seen.vo_frames;
 		table.set("vo_fake", static_cast<long long>(frame.index));
-		state_ = {};
-		if (frame.index == 0) return {};
-		const double units = units_per_step_;
-		state_.new_map = frame.index == 1;
-		state_.camera_map_pose = forward(units * double(frame.index - 1));
-		if (frame.index >= 2) state_.camera_motion = forward(units);
 		VisualOdometryStep step;
-		step.tracked = true;
-		step.pose = forward(units * double(frame.index));  // not used by the metric VO
+		if (frame.index == 0) return step;
+		const double units = units_per_step_;
+		step.new_map = frame.index == 1;
+		step.camera_map_pose = forward(units * double(frame.index - 1));
+		if (frame.index >= 2) step.camera_motion = forward(units);
+		step.camera_pose = forward(units * double(frame.index));  // not used by the metric VO
 		return step;
 	}
-	MonocularState monocular() const override { return state_; }
 	bool rescale(double factor, bool whole_map) override
 	{
 		seen.rescales.push_back({factor, whole_map});
@@ -76,12 +73,11 @@ class FakeMonoVo : public MonocularVisualOdometry
 	}
 
    private:
-	MonocularState state_;
 	double units_per_step_ = 1.0;
 };
 VLO_REGISTER_MODULE(VisualOdometryModule, "fake_mono", FakeMonoVo);
 
-/// A metric VO (stereo-like): the vehicle's motion in metres from frame 1 on, nothing to rescale.
+/// A metric VO (stereo-like): the camera's motion in metres from frame 1 on, nothing to rescale.
 class FakeStereoVo : public VisualOdometryModule
 {
    public:
@@ -89,11 +85,9 @@ class FakeStereoVo : public VisualOdometryModule
 	VisualOdometryStep process(const Frame& frame, FrameTable&) override
 	{
 		VisualOdometryStep step;
-		step.tracked = true;
-		Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-		pose.translation().x() = kStep * double(frame.index);
-		step.pose = pose;
-		if (frame.index >= 1) step.motion = Eigen::Isometry3d(Eigen::Translation3d(kStep, 0, 0));
+		step.metric = true;
+		step.camera_pose = forward(kStep * double(frame.index));
+		if (frame.index >= 1) step.camera_motion = forward(kStep);
 		return step;
 	}
 };
@@ -104,13 +98,12 @@ class FakeScale : public ScaleCorrectionModule
 {
    public:
 	void configure(RunConfig&, int) override {}
-	ScaleApplied process(const Frame* prev, const Frame& cur, const MonocularState& vo, const Rescale& rescale,
-		FrameTable& table) override
+	ScaleCorrection process(const Frame* prev, const Frame& cur, const VisualOdometryStep& vo, FrameTable& table) override
 	{
 		seen.scale_prev_index.push_back(prev ? long(prev->index) : -1);
 		table.set("scale_fake", vo.camera_motion.has_value());
-		if (cur.index == 2 && rescale(0.5, true)) return {0.5, true};
-		if (cur.index == 4 && rescale(1.1, false)) return {1.1, false};
+		if (cur.index == 2) return {ScaleCorrection::Kind::Initial, 0.5, "first"};
+		if (cur.index == 4) return {ScaleCorrection::Kind::Drift, 1.1, "drift"};
 		return {};
 	}
 	std::vector<std::pair<std::string, double>> figures() const override { return {{"fake_figure", 42}}; }
@@ -122,8 +115,8 @@ class FakeLidar : public LidarOdometryModule
 {
    public:
 	void configure(RunConfig&) override {}
-	Eigen::Isometry3d process(
-		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> /*prepared*/,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
 	{
 		seen.lidar_guesses.push_back(vehicle_motion);
 		table.set("lo_fake", static_cast<long long>(frame.scan.size()));
@@ -136,11 +129,11 @@ VLO_REGISTER_MODULE(LidarOdometryModule, "fake_lidar", FakeLidar);
 class FailingLidar : public FakeLidar
 {
    public:
-	Eigen::Isometry3d process(
-		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
 	{
 		if (frame.index == 3) failInput("lidar", "fails at frame 3");
-		return FakeLidar::process(frame, vehicle_motion, table);
+		return FakeLidar::process(frame, std::move(prepared), vehicle_motion, table);
 	}
 };
 VLO_REGISTER_MODULE(LidarOdometryModule, "failing_lidar", FailingLidar);
@@ -149,11 +142,11 @@ VLO_REGISTER_MODULE(LidarOdometryModule, "failing_lidar", FailingLidar);
 class InterruptedLidar : public FakeLidar
 {
    public:
-	Eigen::Isometry3d process(
-		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
 	{
 		if (frame.index == 3) std::raise(SIGINT);
-		return FakeLidar::process(frame, vehicle_motion, table);
+		return FakeLidar::process(frame, std::move(prepared), vehicle_motion, table);
 	}
 };
 VLO_REGISTER_MODULE(LidarOdometryModule, "interrupted_lidar", InterruptedLidar);
@@ -251,7 +244,7 @@ TEST_F(RunLoop, MetricMonoVoGivesTheLidarOdometryTheScaledMotionInVehicleAxes)
 {
 	const RunSummary s = run({"pipeline.mode=vlo"});
 	EXPECT_EQ(s.frames, std::size_t(kFrames));
-	// The corrector sees the previous frame (none at the first) and asks the VO, not the loop, to rescale.
+	// The corrector sees the previous frame (none at the first); its decisions reach the VO, not the loop.
 	EXPECT_EQ(seen.scale_prev_index, (std::vector<long>{-1, 0, 1, 2, 3, 4}));
 	ASSERT_EQ(seen.rescales.size(), 2u);
 	EXPECT_EQ(seen.rescales[0], std::make_pair(0.5, true));
@@ -321,7 +314,7 @@ TEST_F(RunLoop, ModeLoRunsNoVisualOdometryAndModeVoNoLidarOdometry)
 	EXPECT_EQ(vo.final_trajectory, "trajectory_vo.tum");
 	const Trajectory t = readTum(out("trajectory_vo.tum"));
 	ASSERT_EQ(t.size(), std::size_t(kFrames - 1));  // not tracked at frame 0
-	EXPECT_NEAR(t.back().pose.translation().z(), 5.0, 1e-6);  // the VO's own pose, map units
+	EXPECT_NEAR(t.back().pose.translation().x(), 5.0, 1e-6);  // the VO's own pose in vehicle axes, map units
 }
 
 // The motion source's trajectory is cut at the last row's time as the frame has it, not as frames.csv

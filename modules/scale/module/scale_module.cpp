@@ -1,6 +1,6 @@
 // The paper's scale corrector (modules/scale) as the scale-correction module "lidar_depth": per
-// frame, the estimate from C(i-1), L(i-1), C(i) and the VO's camera motion, the policy's decision,
-// the rescaling through the caller, the scale_* columns of frames.csv, and its snapshots.
+// frame, the estimate from C(i-1), L(i-1), C(i) and the VO's camera motion, the policy's decision
+// (returned to the caller, which applies it), the scale_* columns of frames.csv, and its snapshots.
 #include <vlo/core/bounded_sample.h>
 #include <vlo/core/sweep_times.h>
 #include <vlo/kernel/scale_correction.h>
@@ -37,19 +37,19 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		policy_ = std::make_unique<scale::ScaleCorrectionPolicy>(opt_);
 	}
 
-	ScaleApplied process(
-		const Frame* prev, const Frame& cur, const MonocularState& vo, const Rescale& rescale, FrameTable& table) override
+	ScaleCorrection process(const Frame* prev, const Frame& cur, const VisualOdometryStep& vo, FrameTable& table) override
 	{
 		if (vo.new_map)  // a fresh map has an arbitrary scale again
 		{
 			policy_->reset();
 			cumulative_ = -1;
 		}
-		ScaleApplied applied;
+		ScaleCorrection correction;
 		if (!vo.camera_motion || !prev || !prev->has_scan || !prev->has_image)
 		{
-			table.set("scale_decision", std::string(vo.camera_motion ? "no previous scan" : "no VO motion"));
-			return applied;
+			correction.why = vo.camera_motion ? "no previous scan" : "no VO motion";
+			table.set("scale_decision", correction.why);
+			return correction;
 		}
 		// The estimator wants T_{C(i-1)}^{C(i)}; the VO gives the current camera in the previous one.
 		// Once the map is metric its units are metres; before, the estimate itself says how long one is.
@@ -59,36 +59,30 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		++estimates_;
 		valid_ += e.valid ? 1 : 0;
 		const scale::ScaleDecision d = policy_->decide(e);
-		std::string decision = scale::toString(d.kind);
+		correction.why = scale::toString(d.kind);
 		if (d.apply())
 		{
+			// With a camera motion the VO tracked this frame in its map: the caller applies the factor.
 			const bool initial = d.kind == scale::ScaleDecision::Kind::Initial;
-			if (rescale(d.factor, initial))
-			{
-				applied = {d.factor, initial};
-				corrections_ += initial ? 0 : 1;
-				cumulative_ = initial ? 1.0 : cumulative_ * d.factor;
-			}
-			else
-			{
-				policy_->reset();  // the VO had nothing to scale: try again at the next estimate
-				decision = "not applied (no VO map)";
-			}
+			correction.kind = initial ? ScaleCorrection::Kind::Initial : ScaleCorrection::Kind::Drift;
+			correction.factor = d.factor;
+			corrections_ += initial ? 0 : 1;
+			cumulative_ = initial ? 1.0 : cumulative_ * d.factor;
 		}
 		else
-			decision += std::string(": ") + d.why;
-		writeColumns(e, decision, applied, table);
+			correction.why += std::string(": ") + d.why;
+		writeColumns(e, correction, table);
 		// Estimates once the map is metric (the initial one says how long a map unit was: off the plot).
-		const bool initial = d.kind == scale::ScaleDecision::Kind::Initial;
+		const bool initial = correction.kind == ScaleCorrection::Kind::Initial;
 		history_.add(cur.index, e.valid && !initial ? e.scale : std::nan(""), e.counts.inliers,
-			applied.initial ? 1.0 : applied.factor, cumulative_, !e.valid && e.scale > 0 ? e.scale : std::nan(""));
+			initial ? 1.0 : correction.factor, cumulative_, !e.valid && e.scale > 0 ? e.scale : std::nan(""));
 		if (snapshot_every_ > 0 && cur.index % snapshot_every_ == 0)
 		{
 			Frame copy = *prev;
 			copy.image = prev->image.makeDeepCopy();
 			snapshots_.offer({std::move(copy), cur.index, e});
 		}
-		return applied;
+		return correction;
 	}
 
 	void writeSnapshots(const std::string& dir) const override
@@ -136,8 +130,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		return corrector_->estimate(prev, cur, camera_motion.inverse(), &pyramid_, &at_image);
 	}
 
-	void writeColumns(
-		const scale::ScaleEstimate& e, const std::string& decision, const ScaleApplied& applied, FrameTable& table) const
+	void writeColumns(const scale::ScaleEstimate& e, const ScaleCorrection& correction, FrameTable& table) const
 	{
 		table.set("scale_reason", std::string(scale::toString(e.reason)));
 		table.set("scale_s", e.scale, 4);
@@ -148,8 +141,8 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		table.set("scale_culled_kept", static_cast<long long>(e.counts.gradient_kept));
 		table.set("scale_triangulated", static_cast<long long>(e.counts.triangulated));
 		table.set("scale_inliers", static_cast<long long>(e.counts.inliers));
-		table.set("scale_decision", decision);
-		table.set("scale_applied", applied.factor, 4);
+		table.set("scale_decision", correction.why);
+		table.set("scale_applied", correction.factor, 4);
 		table.set("scale_cumulative", policy_->cumulative(), 4);
 		table.set("ms_scale", e.ms.total(), 2);
 	}

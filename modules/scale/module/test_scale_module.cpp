@@ -1,6 +1,6 @@
 // The "lidar_depth" module as the metric VO sees it: created by name, configured from an INI, given
-// a rendered frame pair and a VO motion 0.5 times too short, it asks the caller to scale the whole
-// map by 2 (the first scale of a map) and reports what it applied in frames.csv.
+// a rendered frame pair and a VO motion 0.5 times too short, it decides to scale the whole map by 2
+// (the first scale of a map) and reports that decision in frames.csv.
 #include <gtest/gtest.h>
 #include <vlo/kernel/scale_correction.h>
 
@@ -14,10 +14,9 @@ namespace
 struct Fixture
 {
 	Frame prev, cur;
-	MonocularState vo;  ///< the camera motion of a VO whose map unit is 0.5 m
+	VisualOdometryStep vo;  ///< the camera motion of a VO whose map unit is 0.5 m
 	std::unique_ptr<ScaleCorrectionModule> module;
 	FrameTable table;
-	std::vector<std::pair<double, bool>> rescales;
 
 	Fixture()
 	{
@@ -36,53 +35,49 @@ struct Fixture
 		config.checkAllKeysUsed();
 	}
 
-	ScaleApplied step(const Frame* previous, bool vo_has_map)
+	ScaleCorrection step(const Frame* previous)
 	{
 		table.newRow();
-		return module->process(previous, cur, vo, [&](double f, bool whole) {
-			rescales.push_back({f, whole});
-			return vo_has_map;
-		}, table);
+		return module->process(previous, cur, vo, table);
 	}
 	std::string last(const std::string& column) const { return table.cell(table.rows() - 1, column); }
 };
 }  // namespace
 
-TEST(ScaleModule, TheFirstEstimateScalesTheWholeMapThroughTheCaller)
+TEST(ScaleModule, TheFirstEstimateDecidesToScaleTheWholeMap)
 {
 	Fixture f;
-	const ScaleApplied a = f.step(&f.prev, true);
-	ASSERT_EQ(f.rescales.size(), 1u);
-	EXPECT_NEAR(f.rescales[0].first, 2.0, 0.02);
-	EXPECT_TRUE(f.rescales[0].second);
-	EXPECT_TRUE(a.initial);
-	EXPECT_EQ(a.factor, f.rescales[0].first);
+	const ScaleCorrection a = f.step(&f.prev);
+	EXPECT_EQ(a.kind, ScaleCorrection::Kind::Initial);
+	EXPECT_NEAR(a.factor, 2.0, 0.02);
+	EXPECT_EQ(a.why, "initial");
 	EXPECT_EQ(f.last("scale_decision"), "initial");
 	EXPECT_NEAR(std::stod(f.last("scale_applied")), 2.0, 0.02);
 	ASSERT_EQ(f.module->figures().size(), 3u);
 	EXPECT_EQ(f.module->figures()[2], std::make_pair(std::string("scale_corrections"), 0.0));  // initial only
 }
 
-TEST(ScaleModule, AVoWithoutMapIsAskedAgainAtTheNextEstimate)
+TEST(ScaleModule, ANewMapIsScaledWholeAgain)
 {
 	Fixture f;
-	const ScaleApplied a = f.step(&f.prev, false);
-	EXPECT_EQ(a.factor, 1.0);
-	EXPECT_EQ(f.last("scale_decision"), "not applied (no VO map)");
+	ASSERT_EQ(f.step(&f.prev).kind, ScaleCorrection::Kind::Initial);
 	f.vo.new_map = false;
-	const ScaleApplied b = f.step(&f.prev, true);
-	ASSERT_EQ(f.rescales.size(), 2u);
-	EXPECT_TRUE(f.rescales[1].second);  // initial again, not a correction
-	EXPECT_TRUE(b.initial);
+	const ScaleCorrection same = f.step(&f.prev);  // the map is metric: 2 now means a drift
+	EXPECT_NE(same.kind, ScaleCorrection::Kind::Initial);
+	f.vo.new_map = true;
+	const ScaleCorrection again = f.step(&f.prev);
+	EXPECT_EQ(again.kind, ScaleCorrection::Kind::Initial);  // a fresh map, initial again
+	EXPECT_NEAR(again.factor, 2.0, 0.02);
 }
 
 TEST(ScaleModule, NothingWithoutAPreviousFrameOrAMotion)
 {
 	Fixture f;
-	f.step(nullptr, true);
+	EXPECT_FALSE(f.step(nullptr).apply());
 	EXPECT_EQ(f.last("scale_decision"), "no previous scan");
 	f.vo.camera_motion.reset();
-	f.step(&f.prev, true);
+	const ScaleCorrection none = f.step(&f.prev);
+	EXPECT_FALSE(none.apply());
+	EXPECT_EQ(none.why, "no VO motion");
 	EXPECT_EQ(f.last("scale_decision"), "no VO motion");
-	EXPECT_TRUE(f.rescales.empty());
 }

@@ -1,5 +1,4 @@
-// The ORB-SLAM2-style monocular VO of modules/vo as the visual odometry module "orb". Camera poses
-// become vehicle poses through the rig's vehicle_T_camera.
+// The ORB-SLAM2-style monocular VO of modules/vo as the visual odometry module "orb".
 #include <vlo/core/error.h>
 #include <vlo/kernel/visual_odometry.h>
 #include <vlo/vo/visual_odometry.h>
@@ -26,7 +25,6 @@ class OrbVoModule : public MonocularVisualOdometry
 				failInput(where, "no valid camera intrinsics in the rawlog for the visual odometry");
 			vo_ = std::make_unique<vo::VisualOdometry>(frame.rig.camera, opt_);
 			vo_->useMappingThread(threads_ >= 2);
-			vehicle_T_camera_ = frame.rig.vehicle_T_camera;
 		}
 		const vo::VoFrameInfo info = vo_->process(frame.image.asCvMatRef(), frame.t);  // grey already
 
@@ -41,23 +39,16 @@ class OrbVoModule : public MonocularVisualOdometry
 		table.set("vo_metric", info.metric);
 		table.setTimes("vo_", info.ms);
 
-		// A camera motion C seen from the vehicle: V = Tvc * C * Tvc^-1. The lever arm of Tvc is in
-		// metres: in a map of unknown scale it is left out (camera path in vehicle axes), or it would
-		// bend the path by (I - R) t_vc against motions in map units.
-		Eigen::Isometry3d Tvc = vehicle_T_camera_;
-		if (!info.metric) Tvc.translation().setZero();
-		const auto toVehicle = [&](const Eigen::Isometry3d& C) { return Tvc * C * Tvc.inverse(); };
 		VisualOdometryStep step;
-		step.tracked = info.pose.has_value();
-		if (info.pose) step.pose = toVehicle(*info.pose);
-		if (info.motion) step.motion = toVehicle(*info.motion);
-		mono_ = {info.motion, info.map_pose, info.new_map};
+		step.camera_pose = info.pose;
+		step.camera_motion = info.motion;
+		step.camera_map_pose = info.map_pose;
+		step.new_map = info.new_map;
+		step.metric = info.metric;
 		return step;
 	}
 
 	void useThreads(int threads) override { threads_ = threads; }
-
-	MonocularState monocular() const override { return mono_; }
 
 	bool rescale(double factor, bool whole_map) override
 	{
@@ -68,8 +59,6 @@ class OrbVoModule : public MonocularVisualOdometry
    private:
 	vo::VoOptions opt_;
 	std::unique_ptr<vo::VisualOdometry> vo_;
-	Eigen::Isometry3d vehicle_T_camera_ = Eigen::Isometry3d::Identity();
-	MonocularState mono_;
 	int threads_ = 1;
 };
 VLO_REGISTER_MODULE(VisualOdometryModule, "orb", OrbVoModule);

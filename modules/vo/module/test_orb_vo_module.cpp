@@ -1,6 +1,7 @@
-// The "orb" module as the run loop sees it: created by name, configured from an INI, it turns the
-// camera's motion into the vehicle's (V = Tvc C Tvc^-1), leaving the metric lever arm out until the
-// map has a metric scale, and rescales its map on the scale corrector's request.
+// The "orb" module as the run loop sees it: created by name, configured from an INI, it reports the
+// camera's motion in map units until its map is scaled, then in metres; and CameraMount, which turns
+// the camera's motion into the vehicle's (V = Tvc C Tvc^-1), leaving the metric lever arm out until
+// the map has a metric scale.
 #include <gtest/gtest.h>
 #include <vlo/kernel/visual_odometry.h>
 
@@ -51,27 +52,40 @@ struct Drive
 double gap(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) { return (a.matrix() - b.matrix()).norm(); }
 }  // namespace
 
-TEST(OrbVoModule, VehicleMotionIsTheCameraMotionInVehicleAxesWithTheLeverArmOnceMetric)
+TEST(OrbVoModule, ReportsTheCameraAndIsMetricOnceScaled)
 {
 	Drive d;
 	ASSERT_NE(d.vo, nullptr);  // "orb" is a monocular VO
 	EXPECT_FALSE(d.vo->rescale(2.0, true));  // no map yet
 	VisualOdometryStep step;
-	for (int i = 0; i < 10 && !d.vo->monocular().new_map; ++i) step = d.next();
-	ASSERT_TRUE(d.vo->monocular().new_map);
+	for (int i = 0; i < 10 && !step.new_map; ++i) step = d.next();
+	ASSERT_TRUE(step.new_map);
+	EXPECT_FALSE(step.metric);
 	step = d.next();
-	ASSERT_TRUE(step.motion && d.vo->monocular().camera_motion);
-	const Eigen::Isometry3d C = *d.vo->monocular().camera_motion;
-	Eigen::Isometry3d R = vehicleTcamera();
-	R.translation().setZero();
-	EXPECT_LT(gap(*step.motion, R * C * R.inverse()), 1e-9);  // map units: rotation only
+	ASSERT_TRUE(step.camera_motion && step.camera_pose && step.camera_map_pose);
+	EXPECT_FALSE(step.metric);
 	EXPECT_EQ(d.table.cell(d.table.rows() - 1, "vo_metric"), "0");
 
 	ASSERT_TRUE(d.vo->rescale(1.0, true));  // the map is metric from now on
 	step = d.next();
-	ASSERT_TRUE(step.motion && d.vo->monocular().camera_motion);
-	const Eigen::Isometry3d Tvc = vehicleTcamera();
-	EXPECT_LT(gap(*step.motion, Tvc * *d.vo->monocular().camera_motion * Tvc.inverse()), 1e-9);
+	ASSERT_TRUE(step.camera_motion);
+	EXPECT_TRUE(step.metric);
 	EXPECT_EQ(d.table.cell(d.table.rows() - 1, "vo_metric"), "1");
-	EXPECT_FALSE(d.vo->monocular().new_map);
+	EXPECT_FALSE(step.new_map);
+}
+
+TEST(CameraMount, VehicleMotionIsTheCameraMotionInVehicleAxesWithTheLeverArmOnceMetric)
+{
+	Frame f;
+	f.rig.vehicle_T_camera = vehicleTcamera();
+	CameraMount mount;
+	mount.observe(f);
+	f.rig.vehicle_T_camera = Eigen::Isometry3d::Identity();
+	mount.observe(f);  // the first frame's placement stays
+	const Eigen::Isometry3d C = Eigen::Translation3d(0.1, -0.2, 1.3) * Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitY());
+	Eigen::Isometry3d R = vehicleTcamera();
+	R.translation().setZero();
+	EXPECT_LT(gap(mount.vehicle(C, false), R * C * R.inverse()), 1e-9);  // map units: rotation only
+	const Eigen::Isometry3d Tvc = vehicleTcamera();
+	EXPECT_LT(gap(mount.vehicle(C, true), Tvc * C * Tvc.inverse()), 1e-9);
 }

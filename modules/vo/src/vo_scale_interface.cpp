@@ -1,51 +1,8 @@
-// What the scale corrector sees of, and does to, the visual odometry.
-#include <algorithm>
-#include <unordered_set>
-
+// What a scale corrector's decision does to the visual odometry's map.
 #include "vo_impl.h"
 
 namespace vlo::vo
 {
-const VoFrameInfo& VisualOdometry::lastInfo() const { return impl_->info; }
-VoState VisualOdometry::state() const { return impl_->state; }
-
-namespace
-{
-/// The keyframes of the window: the optimised ones and the fixed ones of its last bundle adjustment,
-/// which share its points.
-std::vector<KeyFrame*> windowKeyFrames(const BundleWindow& w)
-{
-	std::vector<KeyFrame*> out = w.local;
-	out.insert(out.end(), w.fixed.begin(), w.fixed.end());
-	return out;
-}
-
-/// Live points of those keyframes, each once, in keyframe then keypoint order.
-std::vector<MapPoint*> windowPoints(const BundleWindow& w)
-{
-	std::vector<MapPoint*> out;
-	std::unordered_set<const MapPoint*> seen;
-	for (KeyFrame* kf : windowKeyFrames(w))
-		for (MapPoint* p : kf->points)
-			if (p && !p->bad && seen.insert(p).second) out.push_back(p);
-	return out;
-}
-}  // namespace
-
-LocalMapView VisualOdometry::localMap() const
-{
-	LocalMapView v;
-	if (!impl_->mapper || !impl_->mapper->window().anchor) return v;
-	const BundleWindow& w = impl_->mapper->window();
-	v.anchor_id = w.anchor->id;
-	v.anchor_Tcw = w.anchor->Tcw;
-	for (const KeyFrame* kf : w.local) v.keyframes.push_back({kf->id, kf->frame_index, kf->t, kf->Tcw, false});
-	for (const KeyFrame* kf : w.fixed) v.keyframes.push_back({kf->id, kf->frame_index, kf->t, kf->Tcw, true});
-	std::sort(v.keyframes.begin(), v.keyframes.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
-	for (const MapPoint* p : windowPoints(w)) v.points.push_back({p->id, p->pos, p->numObservations()});
-	return v;
-}
-
 void VisualOdometry::Impl::rescaleCurrent(const std::function<void(SE3&)>& f, double s)
 {
 	// The output trajectory stays continuous: the pose just output is kept, later motions scale.
@@ -95,7 +52,6 @@ bool VisualOdometry::setMapScale(double s)
 	if (m.mapper) m.mapper->scalePending(s);
 	m.rescaleCurrent([&](SE3& T) { T.translation() *= s; }, s);
 	m.metric = true;
-	m.info.metric = true;
 	return true;
 }
 }  // namespace vlo::vo

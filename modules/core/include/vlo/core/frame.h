@@ -4,7 +4,6 @@
 #include <mrpt/img/DistortionModel.h>
 
 #include <Eigen/Geometry>
-#include <any>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -69,9 +68,5 @@ struct Frame
 	mrpt::img::CImage image;  ///< grayscale, rectified
 	PointCloud scan;  ///< LiDAR frame
 	SensorRig rig;
-	/// What a LiDAR odometry computed from this frame alone ahead of its turn, maybe on the reader's
-	/// thread (LidarOdometryModule::prepare), and the milliseconds it took; empty if nothing.
-	std::any lidar_prepared;
-	double lidar_prepared_ms = 0;
 };
 }  // namespace vlo

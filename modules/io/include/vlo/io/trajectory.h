@@ -1,19 +1,14 @@
 #pragma once
 // Trajectory files. TUM: "t x y z qx qy qz qw" per line (t in the dataset's own seconds).
 // KITTI: 12 numbers per line, the row-major 3x4 pose of camera 0 relative to camera 0 at frame 0.
+#include <vlo/core/trajectory.h>
+
 #include <Eigen/Geometry>
 #include <string>
 #include <vector>
 
 namespace vlo
 {
-struct StampedPose
-{
-	double t = 0;
-	Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-};
-using Trajectory = std::vector<StampedPose>;
-
 /// Reads a TUM file. '#' comments and blank lines are skipped. Throws InputError naming the file and
 /// line for a malformed or non-finite line, and for timestamps that do not increase.
 Trajectory readTum(const std::string& path);
@@ -39,9 +34,4 @@ std::vector<double> readKittiTimes(const std::string& path);
 /// V_k = Tr^-1 * C_k * Tr, so both start at identity when C_0 is identity.
 Trajectory cameraToVehicle(const Trajectory& cam0, const Eigen::Isometry3d& cam0_T_velo);
 Trajectory vehicleToCamera(const Trajectory& vehicle, const Eigen::Isometry3d& cam0_T_velo);
-
-/// Re-expresses every pose relative to the first one (first pose becomes identity).
-Trajectory relativeToFirst(const Trajectory& traj);
-/// Sum of distances between consecutive positions.
-double pathLength(const Trajectory& traj);
 }  // namespace vlo

@@ -6,39 +6,38 @@
 #include <vlo/kernel/frame_table.h>
 #include <vlo/kernel/registry.h>
 #include <vlo/kernel/run_config.h>
+#include <vlo/kernel/sensor_mount.h>
 
 #include <Eigen/Geometry>
+#include <memory>
 #include <optional>
 
 namespace vlo
 {
 /// Where a LiDAR odometry that works in its sensor's frame meets the interface's vehicle frame: the
 /// LiDAR's placement, taken from the first frame, moves guesses in and poses out.
-class LidarMount
+class LidarMount : public SensorMount
 {
    public:
-	/// Takes the placement from the first frame it sees; later frames keep it.
-	void observe(const Frame& frame)
-	{
-		if (known_) return;
-		vehicle_T_lidar_ = frame.rig.vehicle_T_lidar;
-		known_ = true;
-	}
+	LidarMount() : SensorMount(&SensorRig::vehicle_T_lidar) {}
 	/// A motion of the vehicle seen from the LiDAR: L = Tvl^-1 * V * Tvl.
 	std::optional<Eigen::Isometry3d> lidarMotion(const std::optional<Eigen::Isometry3d>& vehicle_motion) const
 	{
 		if (!vehicle_motion) return std::nullopt;
-		return vehicle_T_lidar_.inverse() * *vehicle_motion * vehicle_T_lidar_;
+		return vehicleTsensor().inverse() * *vehicle_motion * vehicleTsensor();
 	}
 	/// The vehicle's pose relative to its first frame from the LiDAR's relative to its first frame.
 	Eigen::Isometry3d vehiclePose(const Eigen::Isometry3d& lidar_pose) const
 	{
-		return vehicle_T_lidar_ * lidar_pose * vehicle_T_lidar_.inverse();
+		return vehicleTsensor() * lidar_pose * vehicleTsensor().inverse();
 	}
+};
 
-   private:
-	Eigen::Isometry3d vehicle_T_lidar_ = Eigen::Isometry3d::Identity();
-	bool known_ = false;
+/// What a LiDAR odometry computed from a frame's scan alone, ahead of the frame's turn: each module
+/// derives its own, and gets it back, to own, with the frame.
+struct PreparedScan
+{
+	virtual ~PreparedScan() = default;
 };
 
 class LidarOdometryModule
@@ -47,15 +46,16 @@ class LidarOdometryModule
 	virtual ~LidarOdometryModule() = default;
 	/// Loads and validates this module's options from the run configuration.
 	virtual void configure(RunConfig& config) = 0;
-	/// Work on the frame alone, ahead of process, maybe on another thread (the run's reader); it
-	/// leaves its result in frame.lidar_prepared for process. Called once per frame, in frame order,
-	/// from one thread at a time; it must touch nothing process uses, so that the results are the
-	/// same whichever thread runs it. Default: nothing ahead.
-	virtual void prepare(Frame& /*frame*/) {}
-	/// `vehicle_motion` is an external guess of the vehicle's motion since the previous frame, in
-	/// metres (pose of the current vehicle frame in the previous one), or nullopt: the module then
-	/// predicts on its own. Returns the vehicle pose relative to the vehicle at the first frame.
-	virtual Eigen::Isometry3d process(
-		const Frame& frame, const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) = 0;
+	/// Work on the frame alone, ahead of process, maybe on another thread (the run's reader); its
+	/// result comes back with the frame to process. Called once per frame, in frame order, from one
+	/// thread at a time; it must touch nothing process uses, so that the results are the same
+	/// whichever thread runs it. Default: nothing ahead (nullptr).
+	virtual std::unique_ptr<PreparedScan> prepare(const Frame& /*frame*/) { return nullptr; }
+	/// `prepared` is what prepare() made of this frame, or nullptr (then the module does that work
+	/// itself). `vehicle_motion` is an external guess of the vehicle's motion since the previous
+	/// frame, in metres (pose of the current vehicle frame in the previous one), or nullopt: the
+	/// module then predicts on its own. Returns the vehicle pose relative to the vehicle at the first frame.
+	virtual Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) = 0;
 };
 }  // namespace vlo

@@ -3,12 +3,13 @@
 // motion since the previous frame, e.g. a stereo VO alone, or a monocular VO kept metric by a scale
 // corrector. Created by name ([pipeline] motion_source) through registry<MotionSource>().
 #include <vlo/core/frame.h>
-#include <vlo/io/trajectory.h>
+#include <vlo/core/trajectory.h>
 #include <vlo/kernel/frame_table.h>
 #include <vlo/kernel/registry.h>
 #include <vlo/kernel/run_config.h>
 
 #include <Eigen/Geometry>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -32,8 +33,9 @@ class MotionSource
 	/// Creates and configures the composed modules.
 	virtual void configure(RunConfig& config, const MotionSourceSetup& setup) = 0;
 	/// The vehicle's motion since the previous frame (pose of the current vehicle frame in the
-	/// previous one), when known; writes its diagnostics columns.
-	virtual std::optional<Eigen::Isometry3d> process(const Frame& frame, FrameTable& table) = 0;
+	/// previous one), when known; writes its diagnostics columns. The frame is shared, never changed
+	/// again, so that a source may keep it for the next frame without a copy.
+	virtual std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, FrameTable& table) = 0;
 	/// Vehicle poses relative to the vehicle at the start, as written to trajectory_vo.tum.
 	virtual Trajectory trajectory() const = 0;
 	/// Name of that trajectory in plots.

@@ -1,25 +1,47 @@
 #pragma once
-// Module family "visual odometry": per frame, the vehicle's motion and pose from the camera, in the
-// VO's own units (metres for a stereo or RGB-D VO, an arbitrary map scale for a monocular one).
-// Created by name ([pipeline] visual_odometry) through registry<VisualOdometryModule>().
+// Module family "visual odometry": per frame, the camera's pose and motion in the VO's own units
+// (metres for a stereo or RGB-D VO, an arbitrary map scale for a monocular one), one result a frame.
+// The motion source places the camera on the vehicle (CameraMount). Created by name
+// ([pipeline] visual_odometry) through registry<VisualOdometryModule>().
 #include <vlo/core/frame.h>
 #include <vlo/kernel/frame_table.h>
 #include <vlo/kernel/registry.h>
 #include <vlo/kernel/run_config.h>
+#include <vlo/kernel/sensor_mount.h>
 
 #include <Eigen/Geometry>
 #include <optional>
 
 namespace vlo
 {
+/// What a visual odometry tells of one frame, in the camera's optical frame and the VO's units.
 struct VisualOdometryStep
 {
-	bool tracked = false;  ///< false while initialising or LOST
-	/// Vehicle pose relative to the vehicle at the first frame, when tracked.
-	std::optional<Eigen::Isometry3d> pose;
-	/// Motion of the vehicle since the previous frame (pose of the current vehicle frame in the
-	/// previous one), when both frames were tracked.
-	std::optional<Eigen::Isometry3d> motion;
+	/// Camera pose relative to the camera where the VO began, when tracked.
+	std::optional<Eigen::Isometry3d> camera_pose;
+	/// Pose of the current camera in the previous one, when both frames were tracked in one map.
+	std::optional<Eigen::Isometry3d> camera_motion;
+	/// Camera pose in the current map's frame, when tracked: what scaling the whole map scales.
+	std::optional<Eigen::Isometry3d> camera_map_pose;
+	bool new_map = false;  ///< a map (of arbitrary scale for a monocular VO) was initialised at this frame
+	bool metric = false;  ///< the units are metres (a monocular VO's: once its map was scaled)
+};
+
+/// Where the camera sits on the vehicle, taken from the first frame: turns the VO's camera poses and
+/// motions into the vehicle's.
+class CameraMount : public SensorMount
+{
+   public:
+	CameraMount() : SensorMount(&SensorRig::vehicle_T_camera) {}
+	/// A camera pose or motion C seen from the vehicle: V = Tvc * C * Tvc^-1. The lever arm of Tvc is
+	/// in metres: in units that are not (`metric` false) it is left out (the camera's path in vehicle
+	/// axes), or it would bend the path by (I - R) t_vc against motions in map units.
+	Eigen::Isometry3d vehicle(const Eigen::Isometry3d& camera, bool metric) const
+	{
+		Eigen::Isometry3d Tvc = vehicleTsensor();
+		if (!metric) Tvc.translation().setZero();
+		return Tvc * camera * Tvc.inverse();
+	}
 };
 
 class VisualOdometryModule
@@ -35,24 +57,13 @@ class VisualOdometryModule
 	virtual VisualOdometryStep process(const Frame& frame, FrameTable& table) = 0;
 };
 
-/// What a monocular VO tells a scale corrector about the frame just processed, in the camera's
-/// optical frame and map units.
-struct MonocularState
-{
-	std::optional<Eigen::Isometry3d> camera_motion;  ///< current camera in the previous camera
-	std::optional<Eigen::Isometry3d> camera_map_pose;  ///< camera in the current map's frame
-	bool new_map = false;  ///< a map (of arbitrary scale) was initialised at this frame
-};
-
 /// A monocular VO, whose map has an unknown scale that a scale corrector sets and keeps metric.
 class MonocularVisualOdometry : public VisualOdometryModule
 {
    public:
-	/// The state after the last process().
-	virtual MonocularState monocular() const = 0;
-	/// Multiplies the map's lengths by `factor`: about the map's origin when `whole_map` (the first,
-	/// metric scale), else about the local window's earliest keyframe (a drift correction).
-	/// False when there is nothing to scale.
+	/// Multiplies the map's lengths by `factor`, between frames: about the map's origin when
+	/// `whole_map` (the first, metric scale), else about the local window's earliest keyframe (a
+	/// drift correction). False when there is nothing to scale (no map).
 	virtual bool rescale(double factor, bool whole_map) = 0;
 };
 }  // namespace vlo

@@ -5,9 +5,9 @@
 // (on a thread of its own with useMappingThread(); the results are the same). After LOST a new map is initialised and placed where the
 // old trajectory left off, so the output trajectory continues (see doc/VO.md for its scale).
 //
-// For the scale corrector: each frame's relative motion, the local window of the last local bundle
-// adjustment, rescaleAboutWindow() (the whole map, about the window's earliest keyframe) for a drift
-// correction, and setMapScale() (about the map's origin) for the metric scale of a fresh map.
+// For the scale corrector: each frame's relative motion (VoFrameInfo), rescaleAboutWindow() (the whole
+// map, about the local window's earliest keyframe) for a drift correction, and setMapScale() (about
+// the map's origin) for the metric scale of a fresh map.
 #include <vlo/core/stage_times.h>
 #include <vlo/vo/features.h>
 #include <vlo/vo/geometry.h>
@@ -55,28 +55,6 @@ struct VoFrameInfo
 	int new_points = 0, ba_keyframes = 0, ba_fixed = 0, ba_points = 0;
 };
 
-/// A copy of the local window: keyframes of the last local BA (optimised and fixed) and their points.
-struct LocalMapView
-{
-	struct KeyFrameView
-	{
-		long id = -1, frame_index = -1;
-		double t = 0;
-		SE3 Tcw = SE3::Identity();
-		bool fixed = false;  ///< held in the last local BA (observes its points); rescaled too
-	};
-	struct PointView
-	{
-		long id = -1;
-		Vec3 pos = Vec3::Zero();  ///< world (map) frame
-		int observations = 0;
-	};
-	long anchor_id = -1;  ///< the earliest keyframe, about which the window is rescaled
-	SE3 anchor_Tcw = SE3::Identity();
-	std::vector<KeyFrameView> keyframes;  ///< by id, optimised and fixed
-	std::vector<PointView> points;
-};
-
 class VisualOdometry
 {
    public:
@@ -92,10 +70,7 @@ class VisualOdometry
 	/// when due). Changes no result.
 	void useMappingThread(bool on);
 
-	// --- scale corrector interface ---
-	const VoFrameInfo& lastInfo() const;
-	VoState state() const;
-	LocalMapView localMap() const;
+	// What a scale corrector's decision does to the map, between frames.
 	/// Scales the whole map by s about the local window's earliest optimised keyframe (the window:
 	/// keyframes of the last local BA, optimised and fixed, and their points), with the current pose
 	/// and motion model, so that every observation stays consistent. The

@@ -52,11 +52,11 @@ std::vector<std::string> runNames(const std::vector<std::string>& files)
 /// timed by the KITTI times file or 0.1 s apart.
 Trajectory readInVehicleFrame(const std::string& path, const eval::EvalOptions& opts, const std::vector<double>& kitti_times)
 {
-	if (trajectoryFormatOf(path) == TrajectoryFormat::Tum) return readTum(path);
+	if (io::trajectoryFormatOf(path) == io::TrajectoryFormat::Tum) return io::readTum(path);
 	if (!opts.cam0_T_vehicle)
 		failInput(path, "KITTI poses (12 numbers a line) are camera 0's: give --kitti-calib or --cam0-T-vehicle to "
 						"move them into the vehicle frame");
-	return cameraToVehicle(readKittiPoses(path, kitti_times), *opts.cam0_T_vehicle);
+	return io::cameraToVehicle(io::readKittiPoses(path, kitti_times), *opts.cam0_T_vehicle);
 }
 
 /// Why the devkit's plots are missing: the KITTI metric's own note, or too few segments of every length.
@@ -112,7 +112,7 @@ int run(int argc, char** argv)
 		for (const char* single : {"json", "write-aligned"})
 			if (cl.has(single)) failInput(std::string("--") + single, "needs a single --est");
 
-	const std::vector<double> kitti_times = cl.has("kitti-times") ? readKittiTimes(cl.get("kitti-times")) : std::vector<double>{};
+	const std::vector<double> kitti_times = cl.has("kitti-times") ? io::readKittiTimes(cl.get("kitti-times")) : std::vector<double>{};
 	const Trajectory gt = readInVehicleFrame(opts.gt_name, opts, kitti_times);
 	const std::vector<std::string> names = runNames(est_files);
 	std::vector<viz::EvalRun> runs;
@@ -138,7 +138,7 @@ int run(int argc, char** argv)
 	}
 	const eval::EvalReport& report = runs.front().report;
 	if (cl.has("json")) eval::writeJson(cl.get("json"), report);
-	if (cl.has("write-aligned")) writeTum(cl.get("write-aligned"), eval::alignedEstimate(report));
+	if (cl.has("write-aligned")) io::writeTum(cl.get("write-aligned"), eval::alignedEstimate(report));
 	return 0;
 }
 }  // namespace

@@ -42,11 +42,11 @@ void readCommon(const vlo::CommandLine& cl, Import& opt)
 	opt.camera_label = cl.get("camera-label", opt.camera_label);
 	opt.lidar_label = cl.get("lidar-label", opt.lidar_label);
 	if (cl.has("overwrite")) return;
-	for (const std::string& p : {opt.out, vlo::rawlogImagesDir(opt.out), vlo::groundTruthPathFor(opt.out)})
+	for (const std::string& p : {opt.out, vlo::io::rawlogImagesDir(opt.out), vlo::io::groundTruthPathFor(opt.out)})
 		if (std::filesystem::exists(p)) vlo::failInput(p, "exists: give --overwrite to replace it, or another --out");
 }
 
-void report(const vlo::ImportSummary& s)
+void report(const vlo::io::ImportSummary& s)
 {
 	for (const auto& w : s.warnings) vlo::logger().logStr(mrpt::system::LVL_WARN, w);
 	std::printf("vlo-import: %s: %zu frames (%zu images, %zu scans) in %.1f s (%.1f frames/s)\n", s.rawlog.c_str(), s.frames,
@@ -65,7 +65,7 @@ int kittiOdometry(int argc, char** argv)
 		"Usage: vlo-import kitti-odometry --root ROOT --seq NN --out FILE.rawlog [options]\n"
 		"Camera X (image_X, PX) + Velodyne; vehicle frame = Velodyne frame. Without velodyne/ or\n"
 		"without Tr in calib.txt the rawlog is camera-only (with a warning).");
-	vlo::KittiOdometryImport opt;
+	vlo::io::KittiOdometryImport opt;
 	opt.root = cl.get("root");
 	opt.seq = cl.get("seq");
 	opt.out = cl.get("out");
@@ -73,7 +73,7 @@ int kittiOdometry(int argc, char** argv)
 	opt.last = cl.getInt("last", -1);
 	if (cl.has("camera")) opt.camera = static_cast<int>(cl.getInt("camera", 0));
 	readCommon(cl, opt);
-	report(vlo::importKittiOdometry(opt));
+	report(vlo::io::importKittiOdometry(opt));
 	return 0;
 }
 
@@ -87,13 +87,13 @@ int kittiRaw(int argc, char** argv)
 		"Usage: vlo-import kitti-raw --drive DIR --calib DIR --out FILE.rawlog [options]\n"
 		"Rectified camera X + Velodyne; projection P_rect_0X * R_rect_00 * Tr_velo_to_cam.\n"
 		"Times from image_0X/timestamps.txt and velodyne_points/timestamps.txt, else 10 Hz from 0.");
-	vlo::KittiRawImport opt;
+	vlo::io::KittiRawImport opt;
 	opt.drive = cl.get("drive");
 	opt.calib = cl.get("calib");
 	opt.out = cl.get("out");
 	if (cl.has("camera")) opt.camera = static_cast<int>(cl.getInt("camera", 0));
 	readCommon(cl, opt);
-	report(vlo::importKittiRaw(opt));
+	report(vlo::io::importKittiRaw(opt));
 	return 0;
 }
 int rosbag(int argc, char** argv)

@@ -28,9 +28,9 @@ int main(int argc, char** argv)
 			"               [--kitti-calib calib.txt] [--overwrite]\n\n"
 			"Writes trajectory_<mode>.tum (and trajectory_<mode>.kitti.txt, KITTI's camera-0 poses, when the\n"
 			"rig's camera 0 is known), frames.csv, map.pcd, run.ini, summary.json, report.md and snapshots/ in DIR.");
-		vlo::RunRequest req{cl.get("rawlog"), cl.get("ini"), cl.get("out"), cl.getAll("set"), cl.get("gt"),
+		vlo::pipeline::RunRequest req{cl.get("rawlog"), cl.get("ini"), cl.get("out"), cl.getAll("set"), cl.get("gt"),
 			cl.get("kitti-calib"), cl.has("overwrite")};
-		const auto s = vlo::runPipeline(req);
+		const auto s = vlo::pipeline::runPipeline(req);
 		std::printf("vlo-run: %zu frames in %.1f s (%.1f ms/frame), path %.1f m, largest step %.2f m -> %s/%s\n", s.frames,
 			s.seconds, s.ms_per_frame, s.path_length_m, s.max_step_m, req.out.c_str(), s.final_trajectory.c_str());
 		return 0;

@@ -74,8 +74,8 @@ int main(int argc, char** argv)
 		cfg.traffic = static_cast<int>(traffic);
 		cfg.traffic_lidar_returns = !cl.has("traffic-without-returns");
 		if (!cfg.traffic_lidar_returns && cfg.traffic == 0) vlo::failInput("--traffic-without-returns", "needs --traffic N");
-		const auto compression = vlo::parseRawlogCompression(cl.get("rawlog-compression", "none"), "--rawlog-compression");
-		const auto image_format = vlo::parseImageFileFormat(cl.get("image-format", "pnm"), "--image-format");
+		const auto compression = vlo::io::parseRawlogCompression(cl.get("rawlog-compression", "none"), "--rawlog-compression");
+		const auto image_format = vlo::io::parseImageFileFormat(cl.get("image-format", "pnm"), "--image-format");
 		if (cl.has("blackout"))
 		{
 			const std::string b = cl.get("blackout");

@@ -67,7 +67,7 @@ std::set<long> frameIndices(const CommandLine& cl)
 }
 
 void projectedFrames(
-	RawlogReader& reader, const std::string& rawlog, const std::set<long>& ks, const std::string& out)
+	io::RawlogReader& reader, const std::string& rawlog, const std::set<long>& ks, const std::string& out)
 {
 	Frame f;
 	long k = -1;
@@ -95,7 +95,7 @@ void projectedFrames(
 
 /// Every PNG asked for, into `out`.
 void draw(const CommandLine& cl, const std::vector<viz::NamedTrajectory>& trajs, const Trajectory* gtp, const PointCloud& map,
-	const std::set<long>& frames, RawlogReader* reader, const std::string& out);
+	const std::set<long>& frames, io::RawlogReader* reader, const std::string& out);
 
 int run(int argc, char** argv)
 {
@@ -125,18 +125,18 @@ int run(int argc, char** argv)
 	std::vector<viz::NamedTrajectory> trajs;
 	for (size_t i = 0; i < trajFiles.size(); ++i)
 	{
-		Trajectory t = readTum(trajFiles[i]);
+		Trajectory t = io::readTum(trajFiles[i]);
 		if (t.empty()) failInput(trajFiles[i], "no poses");
 		trajs.push_back({i < names.size() ? names[i] : mrpt::system::extractFileName(trajFiles[i]), std::move(t), {}});
 	}
 	Trajectory gt;
-	if (cl.has("gt") && (gt = readTum(cl.get("gt"))).empty()) failInput(cl.get("gt"), "no poses");
+	if (cl.has("gt") && (gt = io::readTum(cl.get("gt"))).empty()) failInput(cl.get("gt"), "no poses");
 	const Trajectory* gtp = cl.has("gt") ? &gt : nullptr;
 	PointCloud map;
-	if (cl.has("map") && (map = readPcd(cl.get("map"))).empty()) failInput(cl.get("map"), "no valid points");
+	if (cl.has("map") && (map = io::readPcd(cl.get("map"))).empty()) failInput(cl.get("map"), "no valid points");
 	const std::set<long> frames = frameIndices(cl);
-	std::unique_ptr<RawlogReader> reader;  // opened now: a missing or foreign file fails before any output
-	if (cl.has("rawlog")) reader = std::make_unique<RawlogReader>(cl.get("rawlog"));
+	std::unique_ptr<io::RawlogReader> reader;  // opened now: a missing or foreign file fails before any output
+	if (cl.has("rawlog")) reader = std::make_unique<io::RawlogReader>(cl.get("rawlog"));
 
 	const std::string out = cl.get("out");
 	std::error_code ec;
@@ -156,7 +156,7 @@ int run(int argc, char** argv)
 }
 
 void draw(const CommandLine& cl, const std::vector<viz::NamedTrajectory>& trajs, const Trajectory* gtp, const PointCloud& map,
-	const std::set<long>& frames, RawlogReader* reader, const std::string& out)
+	const std::set<long>& frames, io::RawlogReader* reader, const std::string& out)
 {
 	if (!trajs.empty() || gtp)
 	{

@@ -60,9 +60,9 @@ const Sequence* rawlog()
 	if (!s && path)
 	{
 		s = std::make_unique<Sequence>();
-		RawlogReaderOptions ro;
+		io::RawlogReaderOptions ro;
 		ro.need_lidar = false;
-		RawlogReader reader(path, ro);
+		io::RawlogReader reader(path, ro);
 		Frame f;
 		while (reader.next(f))
 		{

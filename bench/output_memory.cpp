@@ -56,7 +56,7 @@ int main(int argc, char** argv)
 	if (!(million > 0) || million > 100) return std::fprintf(stderr, "bench_output_memory: MILLION_POINTS in (0, 100]\n"), 2;
 
 	// A street-like map: scans 1 m apart, points on two facades and the ground out to 30 m, 0.2 m voxels.
-	GlobalMap map(0.2, 60);
+	pipeline::GlobalMap map(0.2, 60);
 	std::mt19937 rng(1);
 	std::uniform_real_distribution<float> along(-30, 30), up(0, 12), across(-8, 8);
 	Trajectory path;
@@ -79,7 +79,7 @@ int main(int argc, char** argv)
 
 	PointCloud outputs;
 	const double handOver = peakAbove([&] { outputs = map.takePoints(); });
-	const double pcd = peakAbove([&] { writePcd(dir + "/bench_output_memory.pcd", outputs); });
+	const double pcd = peakAbove([&] { io::writePcd(dir + "/bench_output_memory.pcd", outputs); });
 	const double png = peakAbove([&] {
 		viz::Map3DStyle style;
 		style.title = "bench_output_memory";

@@ -82,7 +82,7 @@ std::string kittiRawlog(const std::string& work)
 {
 	const std::string path = work + "/fuzz_seed_kitti_" + std::to_string(::getpid()) + ".rawlog";
 	{
-		RawlogWriter writer(path, false);
+		io::RawlogWriter writer(path, false);
 		for (const auto& f : kittiSeedFrames(work)) writer.writeFrame(f);
 		writer.commit();
 	}
@@ -109,7 +109,7 @@ std::string velodyneRawlog(const std::string& sample, std::size_t packets, const
 	scan->scan_packets.resize(std::min(packets, scan->scan_packets.size()));
 	const std::string path = work + "/fuzz_seed_velodyne_" + std::to_string(::getpid()) + ".rawlog";
 	{
-		RawlogWriter writer(path);
+		io::RawlogWriter writer(path);
 		writer.write(*scan);
 		writer.commit();
 	}
@@ -136,7 +136,7 @@ std::string tumFromKitti(const std::string& work)
 {
 	const std::string gt = unpacked("kitti_odometry_snippets", work) + "/poses/00.txt";
 	const std::string path = work + "/fuzz_seed_" + std::to_string(::getpid()) + ".tum";
-	writeTum(path, readKittiPoses(gt));
+	io::writeTum(path, io::readKittiPoses(gt));
 	const std::string bytes = fileBytes(path);
 	fs::remove(path);
 	return bytes;
@@ -146,7 +146,7 @@ std::string tumFromKitti(const std::string& work)
 std::vector<Frame> kittiSeedFrames(const std::string& work)
 {
 	const std::string seq = unpacked("kitti_odometry_snippets", work) + "/sequences/00";
-	const auto calib = readKittiOdometryCalib(seq + "/calib.txt", 2);
+	const auto calib = io::readKittiOdometryCalib(seq + "/calib.txt", 2);
 	std::vector<Frame> frames;
 	for (std::size_t k = 0; k < 3; ++k)
 	{
@@ -160,11 +160,11 @@ std::vector<Frame> kittiSeedFrames(const std::string& work)
 		image.extract_patch(f.image, 600, 180, 48, 32);
 		f.has_image = true;
 		PointCloud scan;
-		readKittiBin(seq + "/velodyne/" + name + ".bin", scan);
+		io::readKittiBin(seq + "/velodyne/" + name + ".bin", scan);
 		for (std::size_t i = 0; i < scan.size(); i += 200) f.scan.push_back(scan[i]);
 		f.has_scan = true;
 		f.rig.has_camera = f.rig.has_lidar = true;
-		f.rig.camera = intrinsicsOf(calib.P, 48, 32);
+		f.rig.camera = io::intrinsicsOf(calib.P, 48, 32);
 		f.rig.camera.cx -= 600, f.rig.camera.cy -= 180;
 		f.rig.vehicle_T_camera = calib.cam0_T_velo.inverse();
 		frames.push_back(f);

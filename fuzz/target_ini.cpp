@@ -14,13 +14,13 @@ namespace
 void loadRunIni(const std::string& path)
 {
 	const auto dir = std::filesystem::path(path).parent_path();
-	RunRequest req;
+	pipeline::RunRequest req;
 	req.ini = path;
 	req.rawlog = (dir / "missing.rawlog").string();
 	req.out = (dir / "out").string();
 	try
 	{
-		runPipeline(req);
+		pipeline::runPipeline(req);
 	}
 	catch (const InputError& e)
 	{

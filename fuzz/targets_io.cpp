@@ -45,9 +45,9 @@ void expectFinite(const PointCloud& cloud)
 			"a point is not finite");
 }
 
-void readAllFrames(const std::string& path, RawlogReaderOptions opt)
+void readAllFrames(const std::string& path, io::RawlogReaderOptions opt)
 {
-	RawlogReader reader(path, opt);
+	io::RawlogReader reader(path, opt);
 	Frame frame;
 	std::vector<double> times;
 	while (reader.next(frame))
@@ -71,7 +71,7 @@ void readAllFrames(const std::string& path, RawlogReaderOptions opt)
 
 void readVelodyneRawlog(const std::string& path)
 {
-	RawlogReaderOptions opt;
+	io::RawlogReaderOptions opt;
 	opt.lidar_label = "Velodyne1_SCAN";  // the label of MRPT's own sample recordings
 	opt.need_camera = false;
 	readAllFrames(path, opt);
@@ -81,23 +81,23 @@ void readOdometryCalib(const std::string& path)
 {
 	for (const int camera : {0, 2})
 	{
-		const auto c = readKittiOdometryCalib(path, camera);
+		const auto c = io::readKittiOdometryCalib(path, camera);
 		expect(c.P.allFinite() && c.P0.allFinite(), "a projection is not finite");
 		expect(isRigid(c.cam0_T_velo), "Tr is not a rigid transform");
-		expect(offsetOf(c.P).allFinite(), "the camera offset is not finite");
+		expect(io::offsetOf(c.P).allFinite(), "the camera offset is not finite");
 	}
 }
 
 // The seed holds calib_cam_to_cam.txt and calib_velo_to_cam.txt in one file: each reader takes its keys.
 void readRawCalib(const std::string& path)
 {
-	const auto c = readKittiRawCalib(path, path, 2);
+	const auto c = io::readKittiRawCalib(path, path, 2);
 	expect(isCamera(c.camera_intrinsics), "the camera is not valid");
 	expect(isRigid(c.camera_T_velo), "camera_T_velo is not a rigid transform");
 }
 
-void readTimes(const std::string& path) { expectIncreasing(readKittiTimes(path)); }
-void readRawTimestamps(const std::string& path) { expectIncreasing(readKittiRawTimestamps(path)); }
+void readTimes(const std::string& path) { expectIncreasing(io::readKittiTimes(path)); }
+void readRawTimestamps(const std::string& path) { expectIncreasing(io::readKittiRawTimestamps(path)); }
 
 void expectPoses(const Trajectory& traj)
 {
@@ -110,18 +110,18 @@ void expectPoses(const Trajectory& traj)
 	expectIncreasing(times);
 }
 
-void readPoses(const std::string& path) { expectPoses(readKittiPoses(path)); }
+void readPoses(const std::string& path) { expectPoses(io::readKittiPoses(path)); }
 
 void readVelodyneBin(const std::string& path)
 {
 	PointCloud cloud;
-	readKittiBin(path, cloud);
+	io::readKittiBin(path, cloud);
 	expectFinite(cloud);
 }
 }  // namespace
 
 void readRawlogChecked(const std::string& path) { readAllFrames(path, {}); }
-void readTumChecked(const std::string& path) { expectPoses(readTum(path)); }
+void readTumChecked(const std::string& path) { expectPoses(io::readTum(path)); }
 
 std::vector<Target> ioTargets()
 {

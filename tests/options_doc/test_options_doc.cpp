@@ -28,9 +28,9 @@ std::string cell(std::string text)
 RunConfig loadEverySection()
 {
 	auto config = RunConfig::fromString("", "none.ini");
-	PipelineOptions pipeline;
+	pipeline::PipelineOptions pipeline;
 	config.load(pipeline, "pipeline");
-	PointTimeOptions times;
+	pipeline::PointTimeOptions times;
 	config.load(times, "lidar");
 	for (auto& [name, m] : registry<VisualOdometryModule>().createAll()) m->configure(config);
 	for (auto& [name, m] : registry<ScaleCorrectionModule>().createAll()) m->configure(config, 0);

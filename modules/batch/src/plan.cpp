@@ -46,7 +46,7 @@ Sequence readSequence(
 	Sequence s;
 	s.name = name;
 	s.rawlog = absolutePath(k.rawlog, data);
-	s.gt = absolutePath(r.has("gt") ? k.gt : groundTruthPathFor(s.rawlog), data);
+	s.gt = absolutePath(r.has("gt") ? k.gt : io::groundTruthPathFor(s.rawlog), data);
 	if (!r.has("ini")) failInput(r.where("ini"), "missing (the base INI of the sensor, e.g. ../sim-hdl64.ini)");
 	s.ini = absolutePath(k.ini, plan_dir);
 	if (check_files && !fs::is_regular_file(s.ini)) failInput(r.where("ini"), s.ini + " does not exist");
@@ -61,8 +61,8 @@ Sequence readSequence(
 	if (r.has("sim") && sim.empty()) failInput(r.where("sim"), "empty (give vlo-sim arguments or leave the key out)");
 	if (!sim.empty())
 	{
-		if (s.gt != groundTruthPathFor(s.rawlog))
-			failInput(r.where("gt"), "must be left out with sim: vlo-sim writes " + groundTruthPathFor(s.rawlog));
+		if (s.gt != io::groundTruthPathFor(s.rawlog))
+			failInput(r.where("gt"), "must be left out with sim: vlo-sim writes " + io::groundTruthPathFor(s.rawlog));
 		s.sim = checkSimArgs(sim, data, check_files && s.dataMissing(), r);
 	}
 	else if (check_files && !fs::is_regular_file(s.rawlog))

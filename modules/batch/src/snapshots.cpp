@@ -21,12 +21,12 @@ bool drawSequence(const Sequence& s, const std::vector<RunResult>& results, cons
 			// An unscaled monocular estimate means nothing next to metric ones before its Sim(3) alignment.
 			const bool useAligned = !t.aligned.empty();
 			const std::string file = useAligned ? t.aligned : r.dir + "/" + files::trajectory(t.name);
-			trajs.push_back({r.config + " / " + t.name + (useAligned ? " (Sim(3) aligned)" : ""), readTum(file), std::nullopt});
+			trajs.push_back({r.config + " / " + t.name + (useAligned ? " (Sim(3) aligned)" : ""), io::readTum(file), std::nullopt});
 		}
 	}
 	if (trajs.empty()) return false;
 	Trajectory gt;
-	if (std::filesystem::is_regular_file(s.gt)) gt = readTum(s.gt);
+	if (std::filesystem::is_regular_file(s.gt)) gt = io::readTum(s.gt);
 	viz::TopDownStyle style;
 	style.title = s.name + ": " + std::to_string(trajs.size()) + " trajectories";
 	viz::renderTopDown(trajs, gt.empty() ? nullptr : &gt, png, style);

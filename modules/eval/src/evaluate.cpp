@@ -64,8 +64,8 @@ EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptio
 		r.kitti_note = "needs full ground-truth poses; the ground truth is translation-only";
 	else
 	{
-		const Trajectory kgt = opts.cam0_T_vehicle ? vehicleToCamera(a.gt, *opts.cam0_T_vehicle) : a.gt;
-		const Trajectory kest = opts.cam0_T_vehicle ? vehicleToCamera(a.est, *opts.cam0_T_vehicle) : a.est;
+		const Trajectory kgt = opts.cam0_T_vehicle ? io::vehicleToCamera(a.gt, *opts.cam0_T_vehicle) : a.gt;
+		const Trajectory kest = opts.cam0_T_vehicle ? io::vehicleToCamera(a.est, *opts.cam0_T_vehicle) : a.est;
 		r.kitti = kittiMetric(kgt, kest, opts.kitti_options);
 		if (r.kitti->empty())
 		{

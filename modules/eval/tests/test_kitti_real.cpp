@@ -37,7 +37,7 @@ fs::path kittiGtDir()
 Trajectory gt00()
 {
 	const fs::path d = kittiGtDir();
-	return readKittiPoses((d / "00.txt").string(), readKittiTimes((d / "00_times.txt").string()));
+	return io::readKittiPoses((d / "00.txt").string(), io::readKittiTimes((d / "00_times.txt").string()));
 }
 
 // ---- devkit transcription: floats throughout, as the devkit's Matrix::inv / vector<float> ----
@@ -161,14 +161,14 @@ TEST(KittiReal, VehicleFrameInputIsMovedToCamera0)
 	EvalOptions o;
 	o.ate = false;
 	o.cam0_T_vehicle = tr00();
-	const EvalReport rep = evaluate(cameraToVehicle(gt, tr00()), cameraToVehicle(est, tr00()), o);
+	const EvalReport rep = evaluate(io::cameraToVehicle(gt, tr00()), io::cameraToVehicle(est, tr00()), o);
 	ASSERT_TRUE(rep.kitti.has_value());
 	EXPECT_EQ(rep.kitti->segments.size(), cam.segments.size());
 	EXPECT_NEAR(rep.kitti->t_err, cam.t_err, 1e-9);
 	EXPECT_NEAR(rep.kitti->r_err, cam.r_err, 1e-9);
 	// Without the rig the same data scores differently: the metric depends on the frame.
 	o.cam0_T_vehicle.reset();
-	const EvalReport veh = evaluate(cameraToVehicle(gt, tr00()), cameraToVehicle(est, tr00()), o);
+	const EvalReport veh = evaluate(io::cameraToVehicle(gt, tr00()), io::cameraToVehicle(est, tr00()), o);
 	EXPECT_GT(std::abs(veh.kitti->t_err - cam.t_err), 1e-7);
 	std::cout << "t_err camera 0 " << 100 * cam.t_err << " %, vehicle frame " << 100 * veh.kitti->t_err << " %\n";
 }
@@ -178,7 +178,7 @@ TEST(KittiReal, StraightStartOfSequence00HasTheAreOfItsOrientations)
 	// Issue 34, defect 1: KITTI 00's first 48 frames (~40 m, nearly straight) in the vehicle frame, the estimate
 	// exact but for 3 cm of position noise. The positions leave the alignment's roll about the direction of
 	// travel free; the ARE must stay that of the (exact) orientations, not tens of degrees.
-	Trajectory gt = cameraToVehicle(gt00(), tr00());
+	Trajectory gt = io::cameraToVehicle(gt00(), tr00());
 	gt.resize(48);
 	Trajectory est = gt;
 	for (std::size_t i = 0; i < est.size(); ++i)

@@ -21,7 +21,7 @@ void* aligned_malloc(std::size_t size, std::size_t alignment);
 
 void* aligned_malloc(std::size_t size, std::size_t alignment)
 {
-	if (size > vlo::allocationLimit()) throw std::bad_alloc();
+	if (size > vlo::io::allocationLimit()) throw std::bad_alloc();
 	if (alignment != 0 && size % alignment != 0) size = (size / alignment + 1) * alignment;
 	void* p = std::aligned_alloc(alignment, size);
 	if (!p && size != 0) throw std::bad_alloc();
@@ -32,7 +32,7 @@ void* aligned_malloc(std::size_t size, std::size_t alignment)
 #if !defined(VLO_ADDRESS_SANITIZER)
 void* operator new(std::size_t size)
 {
-	if (size > vlo::allocationLimit()) throw std::bad_alloc();
+	if (size > vlo::io::allocationLimit()) throw std::bad_alloc();
 	for (;;)  // the standard's behaviour: retry while a new_handler frees memory
 	{
 		if (void* p = std::malloc(size ? size : 1)) return p;

@@ -4,7 +4,7 @@
 
 #include <limits>
 
-namespace vlo
+namespace vlo::io
 {
 namespace
 {
@@ -19,4 +19,4 @@ ScopedAllocationLimit::ScopedAllocationLimit(std::size_t max_bytes) : previous_(
 ScopedAllocationLimit::~ScopedAllocationLimit() { max_allocation = previous_; }
 
 std::size_t allocationLimit() noexcept { return max_allocation; }
-}  // namespace vlo
+}  // namespace vlo::io

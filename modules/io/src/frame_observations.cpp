@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace vlo
+namespace vlo::io
 {
 using namespace mrpt::obs;
 
@@ -91,4 +91,4 @@ mrpt::img::CImage toGray(const mrpt::img::CImage& img)
 {
 	return img.isColor() ? img.grayscale() : img;
 }
-}  // namespace vlo
+}  // namespace vlo::io

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace vlo
+namespace vlo::io
 {
 PairStep pairStep(const std::deque<double>& images, const std::deque<double>& scans, double tolerance, bool no_more)
 {
@@ -22,4 +22,4 @@ PairStep pairStep(const std::deque<double>& images, const std::deque<double>& sc
 	if (scans.size() < 2) return no_more ? PairStep::Pair : PairStep::NeedMore;
 	return std::abs(scans[1] - ti) < ti - ts ? PairStep::SkipScan : PairStep::Pair;
 }
-}  // namespace vlo
+}  // namespace vlo::io

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-namespace vlo
+namespace vlo::io
 {
 namespace fs = std::filesystem;
 
@@ -80,4 +80,4 @@ double GzReadStream::progress() const
 	const auto p = gzoffset(static_cast<gzFile>(gz_));
 	return p < 0 ? 0.0 : std::min(1.0, static_cast<double>(p) / static_cast<double>(file_size_));
 }
-}  // namespace vlo
+}  // namespace vlo::io

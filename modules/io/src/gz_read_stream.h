@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace vlo
+namespace vlo::io
 {
 class GzReadStream : public mrpt::io::CStream
 {
@@ -43,4 +43,4 @@ class GzReadStream : public mrpt::io::CStream
 	bool end_reached_ = false;
 	std::string data_error_;
 };
-}  // namespace vlo
+}  // namespace vlo::io

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace vlo
+namespace vlo::io
 {
 KittiCalibFile::KittiCalibFile(const std::string& path) : path_(path)
 {
@@ -221,4 +221,4 @@ Eigen::Isometry3d readKittiImuToVelo(const std::string& imu_to_velo)
 	M << f.matrix33("R"), f.vector3("T");
 	return rigidOrFail(M, imu_to_velo, "R, T");
 }
-}  // namespace vlo
+}  // namespace vlo::io

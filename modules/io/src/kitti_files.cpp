@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-namespace vlo
+namespace vlo::io
 {
 std::size_t readKittiBin(const std::string& path, PointCloud& out)
 {
@@ -89,4 +89,4 @@ std::vector<double> readKittiRawTimestamps(const std::string& path)
 	}
 	return times;
 }
-}  // namespace vlo
+}  // namespace vlo::io

@@ -9,7 +9,7 @@
 #include <cctype>
 #include <filesystem>
 
-namespace vlo
+namespace vlo::io
 {
 namespace fs = std::filesystem;
 
@@ -108,4 +108,4 @@ void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig,
 		summary.warnings.push_back(first_invalid + ": " + std::to_string(summary.invalid_points) +
 			" non-finite points dropped from " + std::to_string(scans_with_invalid) + " scans (this is the first)");
 }
-}  // namespace vlo
+}  // namespace vlo::io

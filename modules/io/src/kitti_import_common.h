@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::io
 {
 /// `camera` when it is 0..3; for -1 (the importers' default) the first of cameras 0 (grey), 2 (colour),
 /// 1 and 3 whose folder `<prefix><X>` exists, else 0 (whose folder's absence is then the error).
@@ -40,4 +40,4 @@ struct KittiFrameFiles
 void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig,
 	const Eigen::Isometry3d& vehicle_T_camera0, const std::string& camera_label,
 	const std::string& lidar_label, const std::string& progress_label, ImportSummary& summary);
-}  // namespace vlo
+}  // namespace vlo::io

@@ -8,7 +8,7 @@
 
 #include <filesystem>
 
-namespace vlo
+namespace vlo::io
 {
 namespace fs = std::filesystem;
 
@@ -121,4 +121,4 @@ ImportSummary importKittiOdometry(const KittiOdometryImport& opt)
 	summary.seconds = msSince(start) / 1000.0;
 	return summary;
 }
-}  // namespace vlo
+}  // namespace vlo::io

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace vlo
+namespace vlo::io
 {
 namespace
 {
@@ -58,4 +58,4 @@ Trajectory oxtsVelodyneTrajectory(
 		traj.push_back({times[i], velo_T_imu * imu[i] * velo_T_imu.inverse()});
 	return traj;
 }
-}  // namespace vlo
+}  // namespace vlo::io

@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 
-namespace vlo
+namespace vlo::io
 {
 namespace fs = std::filesystem;
 
@@ -148,4 +148,4 @@ ImportSummary importKittiRaw(const KittiRawImport& opt)
 	summary.seconds = msSince(start) / 1000.0;
 	return summary;
 }
-}  // namespace vlo
+}  // namespace vlo::io

@@ -15,7 +15,7 @@
 #include <numeric>
 #include <optional>
 
-namespace vlo
+namespace vlo::io
 {
 using namespace mrpt::obs;
 
@@ -224,4 +224,4 @@ void orderRingsByElevation(PointCloud& cloud)
 	for (std::size_t i = 0; i < order.size(); ++i) renumber[order[i].second] = static_cast<std::uint16_t>(i);
 	for (auto& p : cloud) p.ring = renumber[p.ring];
 }
-}  // namespace vlo
+}  // namespace vlo::io

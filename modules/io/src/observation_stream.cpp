@@ -8,7 +8,7 @@
 
 #include <new>
 
-namespace vlo
+namespace vlo::io
 {
 using mrpt::obs::CObservation;
 
@@ -102,4 +102,4 @@ bool ObservationStream::readObject()
 				" is a " + obj->GetRuntimeClass()->className + ")");
 	return true;
 }
-}  // namespace vlo
+}  // namespace vlo::io

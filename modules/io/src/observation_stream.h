@@ -9,7 +9,7 @@
 #include <deque>
 #include <string>
 
-namespace vlo
+namespace vlo::io
 {
 class ObservationStream
 {
@@ -38,4 +38,4 @@ class ObservationStream
 
 /// The innermost "Message:" of an MRPT exception text, on one printable line.
 std::string mrptMessage(const std::string& what);
-}  // namespace vlo
+}  // namespace vlo::io

@@ -17,7 +17,7 @@
 #include <fstream>
 #include <vector>
 
-namespace vlo
+namespace vlo::io
 {
 namespace
 {
@@ -160,4 +160,4 @@ PointCloud readPcd(const std::string& path)
 	}
 	return out;
 }
-}  // namespace vlo
+}  // namespace vlo::io

@@ -6,7 +6,7 @@
 #include <map>
 #include <sstream>
 
-namespace vlo
+namespace vlo::io
 {
 namespace
 {
@@ -97,4 +97,4 @@ PcdHeader readPcdHeader(std::istream& in, const std::string& path, std::size_t& 
 		failInput(where, "POINTS " + std::to_string(h.points) + " differs from WIDTH x HEIGHT = " + std::to_string(wh));
 	return h;
 }
-}  // namespace vlo
+}  // namespace vlo::io

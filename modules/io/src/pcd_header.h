@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::io
 {
 struct PcdField
 {
@@ -31,4 +31,4 @@ struct PcdHeader
 
 /// Reads up to and including the DATA line; counts lines in lineNo. Throws InputError naming `path`.
 PcdHeader readPcdHeader(std::istream& in, const std::string& path, std::size_t& lineNo);
-}  // namespace vlo
+}  // namespace vlo::io

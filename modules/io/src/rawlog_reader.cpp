@@ -13,7 +13,7 @@
 #include <optional>
 #include <sstream>
 
-namespace vlo
+namespace vlo::io
 {
 using namespace mrpt::obs;
 
@@ -246,4 +246,4 @@ std::string RawlogReader::statsSummary() const
 	if (s.default_calibrations > 0) o << "; " << s.default_calibrations << " Velodyne scans decoded with the model's default calibration";
 	return o.str();
 }
-}  // namespace vlo
+}  // namespace vlo::io

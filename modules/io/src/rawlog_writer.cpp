@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 
-namespace vlo
+namespace vlo::io
 {
 namespace fs = std::filesystem;
 
@@ -164,4 +164,4 @@ void RawlogWriter::commit()
 }
 
 std::size_t RawlogWriter::observationsWritten() const { return impl_->written; }
-}  // namespace vlo
+}  // namespace vlo::io

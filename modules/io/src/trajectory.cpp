@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace vlo
+namespace vlo::io
 {
 namespace
 {
@@ -163,4 +163,4 @@ Trajectory vehicleToCamera(const Trajectory& vehicle, const Eigen::Isometry3d& c
 	for (auto& p : out) p.pose = cam0_T_velo * p.pose * cam0_T_velo.inverse();
 	return out;
 }
-}  // namespace vlo
+}  // namespace vlo::io

@@ -4,7 +4,7 @@
 #include <opencv2/core/eigen.hpp>
 #include <opencv2/imgproc.hpp>
 
-namespace vlo
+namespace vlo::io
 {
 struct ImageUndistorter::Maps
 {
@@ -50,4 +50,4 @@ bool ImageUndistorter::apply(Frame& frame)
 	cam.dist.fill(0.0);
 	return true;
 }
-}  // namespace vlo
+}  // namespace vlo::io

@@ -113,9 +113,9 @@ inline Frame testFrame(std::size_t index, double t, int w = 64, int h = 48)
 	return f;
 }
 /// Every frame of a rawlog.
-inline std::vector<Frame> readFrames(const std::string& path, RawlogReaderOptions opt = {}, RawlogStats* stats = nullptr)
+inline std::vector<Frame> readFrames(const std::string& path, io::RawlogReaderOptions opt = {}, io::RawlogStats* stats = nullptr)
 {
-	RawlogReader reader(path, opt);
+	io::RawlogReader reader(path, opt);
 	std::vector<Frame> frames;
 	Frame f;
 	while (reader.next(f)) frames.push_back(f);
@@ -126,7 +126,7 @@ inline std::vector<Frame> readFrames(const std::string& path, RawlogReaderOption
 /// A rawlog of single-sensor observations (inline images) at the given times.
 inline void writeStreams(const std::string& path, const std::vector<double>& image_times, const std::vector<double>& scan_times)
 {
-	RawlogWriter w(path, false);
+	io::RawlogWriter w(path, false);
 	std::size_t i = 0, s = 0;
 	while (i < image_times.size() || s < scan_times.size())
 	{

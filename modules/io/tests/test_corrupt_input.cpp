@@ -17,6 +17,7 @@
 #include <regex>
 
 using namespace vlo;
+using namespace vlo::io;
 using namespace vlo::test;
 
 namespace

@@ -4,6 +4,7 @@
 #include <vlo/io/frame_pairing.h>
 
 using namespace vlo;
+using namespace vlo::io;
 using namespace vlo::test;
 
 TEST(FramePairing, DecisionRule)

@@ -12,6 +12,7 @@
 #include <iostream>
 
 using namespace vlo;
+using namespace vlo::io;
 using namespace vlo::test;
 
 namespace

@@ -10,6 +10,7 @@
 #include <fstream>
 
 using namespace vlo;
+using namespace vlo::io;
 using namespace vlo::test;
 
 namespace

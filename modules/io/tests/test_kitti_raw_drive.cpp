@@ -11,6 +11,7 @@
 #include <cmath>
 
 using namespace vlo;
+using namespace vlo::io;
 using namespace vlo::test;
 
 namespace

@@ -13,6 +13,7 @@
 #include <map>
 
 using namespace vlo;
+using namespace vlo::io;
 using namespace vlo::test;
 
 namespace

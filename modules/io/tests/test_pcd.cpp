@@ -13,6 +13,7 @@
 #include <random>
 
 using namespace vlo;
+using namespace vlo::io;
 
 namespace
 {

@@ -9,6 +9,7 @@
 #include <cmath>
 
 using namespace vlo;
+using namespace vlo::io;
 
 namespace
 {

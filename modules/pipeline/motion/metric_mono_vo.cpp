@@ -12,7 +12,7 @@
 
 #include <stdexcept>
 
-namespace vlo
+namespace vlo::pipeline
 {
 namespace
 {
@@ -61,4 +61,4 @@ class MetricMonoVo : public MotionSource
 };
 VLO_REGISTER_MODULE(MotionSource, "metric_mono", MetricMonoVo);
 }  // namespace
-}  // namespace vlo
+}  // namespace vlo::pipeline

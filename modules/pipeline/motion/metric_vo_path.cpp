@@ -1,6 +1,6 @@
 #include "metric_vo_path.h"
 
-namespace vlo
+namespace vlo::pipeline
 {
 namespace
 {
@@ -45,4 +45,4 @@ std::optional<Eigen::Isometry3d> MetricVoPath::update(
 	if (!step.camera_motion) return std::nullopt;
 	return toVehicle(scaled(*step.camera_motion, correction.factor));
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace vlo
+namespace vlo::pipeline
 {
 class MetricVoPath
 {
@@ -38,4 +38,4 @@ class MetricVoPath
 	bool metric_ = false;
 	Trajectory path_;
 };
-}  // namespace vlo
+}  // namespace vlo::pipeline

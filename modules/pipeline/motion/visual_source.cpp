@@ -4,7 +4,7 @@
 #include <vlo/kernel/motion_source.h>
 #include <vlo/kernel/visual_odometry.h>
 
-namespace vlo
+namespace vlo::pipeline
 {
 namespace
 {
@@ -39,4 +39,4 @@ class VisualSource : public MotionSource
 };
 VLO_REGISTER_MODULE(MotionSource, "visual", VisualSource);
 }  // namespace
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -9,7 +9,7 @@
 #include <memory>
 #include <optional>
 
-namespace vlo
+namespace vlo::pipeline
 {
 namespace
 {
@@ -22,10 +22,10 @@ struct FrameInFlight : ReadFrame
 };
 }  // namespace
 
-void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const PointTimeOptions& times,
+void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const PointTimeOptions& times,
 	const RunPlan& plan, RunOutputs& outputs, GlobalMap& map, ProgressLine& progress)
 {
-	ImageUndistorter undistorter;  // the camera's estimators and snapshots see ideal pinhole images
+	io::ImageUndistorter undistorter;  // the camera's estimators and snapshots see ideal pinhole images
 	const bool threaded = popt.threadCount() >= 2;
 	// The LiDAR odometry's work on a frame alone (LOAM's features) runs where the frame is read:
 	// with two threads beside both stages, which leaves the stages more even.
@@ -109,4 +109,4 @@ void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions
 	}
 	worker.wait();
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -13,7 +13,7 @@
 
 #include <memory>
 
-namespace vlo
+namespace vlo::pipeline
 {
 /// The input failed after the frame loop started (a rawlog cut short or damaged in the middle, an image
 /// missing): the frames before it are the run's, and runPipeline keeps them.
@@ -36,6 +36,6 @@ struct Stages
 /// the same order). Returns once every
 /// thread it started has ended, also when it throws: InputEndedEarly when reading fails, Interrupted
 /// after a frame's row on Ctrl-C, with the rows of the frames before complete.
-void runFrames(RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const PointTimeOptions& times,
+void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const PointTimeOptions& times,
 	const RunPlan& plan, RunOutputs& outputs, GlobalMap& map, ProgressLine& progress);
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -1,9 +1,9 @@
 #include <vlo/core/stopwatch.h>
 #include <vlo/pipeline/frame_prefetcher.h>
 
-namespace vlo
+namespace vlo::pipeline
 {
-FramePrefetcher::FramePrefetcher(RawlogReader& reader, std::size_t ahead, std::size_t limit, Prepare prepare)
+FramePrefetcher::FramePrefetcher(io::RawlogReader& reader, std::size_t ahead, std::size_t limit, Prepare prepare)
 	: reader_(reader), ahead_(ahead), limit_(limit), prepare_(std::move(prepare))
 {
 	if (ahead_ > 0) thread_ = std::thread([this] { readAhead(); });
@@ -84,4 +84,4 @@ void FramePrefetcher::readAhead()
 		changed_.notify_all();
 	}
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -3,7 +3,7 @@
 #include <array>
 #include <cmath>
 
-namespace vlo
+namespace vlo::pipeline
 {
 std::uint64_t GlobalMap::key(const Eigen::Vector3f& w) const
 {
@@ -66,4 +66,4 @@ void GlobalMap::coarsen()
 	points_.resize(kept);
 	points_.shrink_to_fit();
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

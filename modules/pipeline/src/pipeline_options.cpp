@@ -4,7 +4,7 @@
 
 #include <thread>
 
-namespace vlo
+namespace vlo::pipeline
 {
 void PipelineOptions::declare(OptionTable& t)
 {
@@ -43,4 +43,4 @@ RunPlan PipelineOptions::plan() const
 	if (mode == "vo") return {"vo", "visual", false, false, ""};
 	return {"vlo", motion_source, true, bootstrapping, "VLO"};
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace vlo
+namespace vlo::pipeline
 {
 void PointTimeOptions::declare(OptionTable& t)
 {
@@ -44,4 +44,4 @@ const char* pointTimeSource(const PointCloud& scan)
 	if (!scan.has_time) return "none";
 	return scan.time_from_azimuth ? "azimuth" : "sensor";
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

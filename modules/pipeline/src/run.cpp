@@ -24,7 +24,7 @@
 
 #include "frame_loop.h"
 
-namespace vlo
+namespace vlo::pipeline
 {
 namespace
 {
@@ -119,17 +119,17 @@ RunSummary runPipeline(const RunRequest& req)
 	checkOutputDir(req.out);
 	RunFolder folder(req.out, req.overwrite);
 	// Every input is read and checked before the first frame: a bad one found at the end would cost the run.
-	if (!req.gt.empty()) readTum(req.gt);
+	if (!req.gt.empty()) io::readTum(req.gt);
 	std::optional<Eigen::Isometry3d> cam0_T_vehicle;
 	if (!req.kitti_calib.empty()) cam0_T_vehicle = eval::readKittiCalibTr(req.kitti_calib);
 
-	RawlogReaderOptions ropt;
+	io::RawlogReaderOptions ropt;
 	ropt.camera_label = popt.camera_label;
 	ropt.lidar_label = popt.lidar_label;
 	ropt.max_time_diff = popt.max_time_diff;
 	ropt.need_camera = stages.motion != nullptr;
 	ropt.need_lidar = stages.lidar != nullptr;
-	RawlogReader reader(req.rawlog, ropt);
+	io::RawlogReader reader(req.rawlog, ropt);
 
 	RunOutputs outputs;
 	outputs.plan = plan;
@@ -140,7 +140,7 @@ RunSummary runPipeline(const RunRequest& req)
 	std::string stopReason;
 	try
 	{
-		runFrames(reader, stages, popt, times, plan, outputs, globalMap, progress);
+		pipeline::runFrames(reader, stages, popt, times, plan, outputs, globalMap, progress);
 	}
 	catch (const Interrupted&)
 	{
@@ -199,4 +199,4 @@ RunSummary runPipeline(const RunRequest& req)
 	if (stop) throwStoppedEarly(stop, summary, req.out);
 	return summary;
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

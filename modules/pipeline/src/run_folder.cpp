@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-namespace vlo
+namespace vlo::pipeline
 {
 namespace fs = std::filesystem;
 
@@ -134,4 +134,4 @@ void RunFolder::recordWritten() const
 		if (!before_.count(f) && f != kManifest) manifest.stream() << f << "\n";
 	manifest.commit();
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-namespace vlo
+namespace vlo::pipeline
 {
 namespace
 {
@@ -28,9 +28,9 @@ double maxStep(const Trajectory& t)
 void writeTrajectory(const std::string& dir, const std::string& name, const Trajectory& traj,
 	const std::optional<Eigen::Isometry3d>& cam0_T_vehicle, std::size_t frames)
 {
-	writeTum(dir + "/trajectory_" + name + ".tum", traj);
+	io::writeTum(dir + "/trajectory_" + name + ".tum", traj);
 	if (cam0_T_vehicle && traj.size() == frames)
-		writeKittiPoses(dir + "/trajectory_" + name + ".kitti.txt", vehicleToCamera(relativeToFirst(traj), *cam0_T_vehicle));
+		io::writeKittiPoses(dir + "/trajectory_" + name + ".kitti.txt", io::vehicleToCamera(relativeToFirst(traj), *cam0_T_vehicle));
 }
 }  // namespace
 
@@ -62,7 +62,7 @@ RunSummary RunOutputs::write(const std::string& dir, const std::string& effectiv
 	s.max_step_m = maxStep(finalTraj);
 	s.figures = figures;
 	table.write(dir + "/frames.csv");
-	if (!map.empty()) writePcd(dir + "/map.pcd", map);
+	if (!map.empty()) io::writePcd(dir + "/map.pcd", map);
 	AtomicOutputFile ini(dir + "/run.ini");
 	const BuildInfo& b = buildInfo();
 	ini.stream() << "# Effective options of this run (defaults included).\n# Written by vlo " << b.version << ", git "
@@ -123,4 +123,4 @@ void writeSummaryJson(const std::string& path, const RunSummary& s, const RunReq
 	f.stream() << j.dump(2) << "\n";
 	f.commit();
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <sstream>
 
-namespace vlo
+namespace vlo::pipeline
 {
 namespace
 {
@@ -47,7 +47,7 @@ std::string accuracyText(const std::string& dir, const RunSummary& s, const RunR
 	o.align = s.mode == "vo" ? eval::Alignment::Sim3 : eval::Alignment::SE3;  // the VO alone is unscaled
 	try
 	{
-		const eval::EvalReport r = evaluate(readTum(req.gt), readTum(traj), o);
+		const eval::EvalReport r = evaluate(io::readTum(req.gt), io::readTum(traj), o);
 		if (plots) viz::writeEvalPlots(dir + "/snapshots", {{s.mode, r}});
 		return "```\n" + eval::formatTable(r) + "```\n";
 	}
@@ -127,4 +127,4 @@ void writeRunReport(const std::string& dir, const RunSummary& s, const RunReques
 	f.stream() << runReportMarkdown(s, req, filesIn(dir), accuracy);
 	f.commit();
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <numeric>
 
-namespace vlo
+namespace vlo::pipeline
 {
 std::vector<StageTiming> stageTimings(const FrameTable& table)
 {
@@ -45,4 +45,4 @@ std::string formatStageTimings(const std::vector<StageTiming>& timings)
 	}
 	return s;
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <utility>
 
-namespace vlo
+namespace vlo::pipeline
 {
 StageWorker::StageWorker(bool threaded, std::size_t depth) : depth_(std::max<std::size_t>(depth, 1))
 {
@@ -69,4 +69,4 @@ void StageWorker::serve()
 		changed_.notify_all();
 	}
 }
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -26,7 +26,7 @@ inline SensorRig smallRig()
 /// Frame i at t0 + 0.1 i s.
 inline void writeSmallDrive(const std::string& path, int frames, const SensorRig& rig, double t0 = 0)
 {
-	RawlogWriter w(path, false);
+	io::RawlogWriter w(path, false);
 	for (int i = 0; i < frames; ++i)
 	{
 		Frame f;

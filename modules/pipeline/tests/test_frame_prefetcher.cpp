@@ -10,6 +10,7 @@
 #include "small_drive.h"
 
 using namespace vlo;
+using namespace vlo::pipeline;
 
 namespace
 {
@@ -38,7 +39,7 @@ class Prefetcher : public ::testing::Test
 	static Read readAll(const std::string& file, std::size_t ahead, std::size_t limit)
 	{
 		Read r;
-		RawlogReader reader(file);
+		io::RawlogReader reader(file);
 		try
 		{
 			FramePrefetcher frames(reader, ahead, limit);
@@ -94,7 +95,7 @@ TEST_F(Prefetcher, AReadErrorComesAfterTheFramesBeforeIt)
 
 TEST_F(Prefetcher, StoppingEarlyEndsTheReaderThread)
 {
-	RawlogReader reader(path());
+	io::RawlogReader reader(path());
 	FramePrefetcher frames(reader, 1, 0);
 	ReadFrame f;
 	ASSERT_TRUE(frames.next(f));

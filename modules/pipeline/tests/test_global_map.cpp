@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 using namespace vlo;
+using namespace vlo::pipeline;
 
 TEST(GlobalMap, OnePointPerVoxelInWorldFrame)
 {

@@ -4,6 +4,7 @@
 #include "metric_vo_path.h"
 
 using namespace vlo;
+using namespace vlo::pipeline;
 
 namespace
 {

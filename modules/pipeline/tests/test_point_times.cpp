@@ -15,40 +15,40 @@ PointCloud leftAndForward(bool sensor_times)
 	return scan;
 }
 
-PointCloud applied(PointTimes mode, bool sensor_times)
+PointCloud applied(pipeline::PointTimes mode, bool sensor_times)
 {
-	PointTimeOptions o;
+	pipeline::PointTimeOptions o;
 	o.point_times = mode;
 	PointCloud scan = leftAndForward(sensor_times);
-	applyPointTimes(scan, o);
+	pipeline::applyPointTimes(scan, o);
 	return scan;
 }
 }  // namespace
 
 TEST(PointTimes, AutoKeepsTheSensorsTimesAndFillsMissingOnesFromTheAzimuth)
 {
-	const PointCloud kept = applied(PointTimes::Auto, true);
-	EXPECT_STREQ(pointTimeSource(kept), "sensor");
+	const PointCloud kept = applied(pipeline::PointTimes::Auto, true);
+	EXPECT_STREQ(pipeline::pointTimeSource(kept), "sensor");
 	EXPECT_FLOAT_EQ(kept[0].time, 0.01f);
-	const PointCloud filled = applied(PointTimes::Auto, false);
-	EXPECT_STREQ(pointTimeSource(filled), "azimuth");
+	const PointCloud filled = applied(pipeline::PointTimes::Auto, false);
+	EXPECT_STREQ(pipeline::pointTimeSource(filled), "azimuth");
 	EXPECT_NEAR(filled[0].time, -0.025f, 1e-7);  // a quarter turn before the frame's time (forward)
 	EXPECT_NEAR(filled[1].time, 0.0f, 1e-7);
 }
 
 TEST(PointTimes, EachOtherModeDoesWhatItSays)
 {
-	EXPECT_STREQ(pointTimeSource(applied(PointTimes::Sensor, false)), "none");
-	EXPECT_FLOAT_EQ(applied(PointTimes::Sensor, true)[1].time, 0.02f);
-	EXPECT_STREQ(pointTimeSource(applied(PointTimes::None, true)), "none");
-	const PointCloud az = applied(PointTimes::Azimuth, true);
-	EXPECT_STREQ(pointTimeSource(az), "azimuth");
+	EXPECT_STREQ(pipeline::pointTimeSource(applied(pipeline::PointTimes::Sensor, false)), "none");
+	EXPECT_FLOAT_EQ(applied(pipeline::PointTimes::Sensor, true)[1].time, 0.02f);
+	EXPECT_STREQ(pipeline::pointTimeSource(applied(pipeline::PointTimes::None, true)), "none");
+	const PointCloud az = applied(pipeline::PointTimes::Azimuth, true);
+	EXPECT_STREQ(pipeline::pointTimeSource(az), "azimuth");
 	EXPECT_NEAR(az[1].time, 0.0f, 1e-7);
 }
 
 TEST(PointTimes, OptionsGiveTheSweep)
 {
-	PointTimeOptions o;
+	pipeline::PointTimeOptions o;
 	o.clockwise = false;
 	o.scan_period = 0.05;
 	o.frame_azimuth_deg = 90;

@@ -23,6 +23,7 @@
 #include <sstream>
 
 using namespace vlo;
+using namespace vlo::pipeline;
 
 namespace
 {
@@ -265,11 +266,11 @@ TEST_F(RunLoop, MetricMonoVoGivesTheLidarOdometryTheScaledMotionInVehicleAxes)
 	EXPECT_EQ(column(out("frames.csv"), "x"), (std::vector<std::string>{"0.000", "0.500", "1.000", "1.500", "2.000", "2.500"}));
 	EXPECT_EQ(column(out("frames.csv"), "lo_fake"), std::vector<std::string>(kFrames, "3"));
 	// The scale-corrected VO: frames 1-2 re-expressed at the first scale, then chained.
-	const Trajectory vo = readTum(out("trajectory_vo.tum"));
+	const Trajectory vo = io::readTum(out("trajectory_vo.tum"));
 	ASSERT_EQ(vo.size(), 5u);
 	const double voX[] = {0, 0.5, 1.0, 1.55, 2.1};
 	for (int k = 0; k < 5; ++k) EXPECT_NEAR(vo[k].pose.translation().x(), voX[k], 1e-6) << k;
-	EXPECT_EQ(readTum(out("trajectory_vlo.tum")).size(), std::size_t(kFrames));
+	EXPECT_EQ(io::readTum(out("trajectory_vlo.tum")).size(), std::size_t(kFrames));
 	EXPECT_EQ(s.final_trajectory, "trajectory_vlo.tum");
 	ASSERT_EQ(s.figures.size(), 1u);
 	EXPECT_EQ(s.figures[0].first, "fake_figure");
@@ -312,7 +313,7 @@ TEST_F(RunLoop, ModeLoRunsNoVisualOdometryAndModeVoNoLidarOdometry)
 	EXPECT_TRUE(seen.lidar_guesses.empty());
 	EXPECT_TRUE(seen.rescales.empty());  // the VO alone: no scale correction
 	EXPECT_EQ(vo.final_trajectory, "trajectory_vo.tum");
-	const Trajectory t = readTum(out("trajectory_vo.tum"));
+	const Trajectory t = io::readTum(out("trajectory_vo.tum"));
 	ASSERT_EQ(t.size(), std::size_t(kFrames - 1));  // not tracked at frame 0
 	EXPECT_NEAR(t.back().pose.translation().x(), 5.0, 1e-6);  // the VO's own pose in vehicle axes, map units
 }
@@ -323,7 +324,7 @@ TEST_F(RunLoop, TheMotionSourceKeepsItsPoseAtTheLastFrameWhateverTheCsvRounding)
 {
 	test::writeSmallDrive(dir_ + "/drive.rawlog", kFrames, test::smallRig(), 4e-7);
 	run({"pipeline.mode=vo"});
-	const Trajectory t = readTum(out("trajectory_vo.tum"));
+	const Trajectory t = io::readTum(out("trajectory_vo.tum"));
 	ASSERT_EQ(t.size(), std::size_t(kFrames - 1));  // not tracked at frame 0
 	EXPECT_EQ(column(out("frames.csv"), "t").back(), "0.500000");
 	EXPECT_NEAR(t.back().t, 0.5000004, 1e-9);
@@ -436,7 +437,7 @@ TEST_F(RunLoop, CtrlCKeepsAConsistentRunOfTheFramesComputed)
 		// Every trajectory ends at the last row, also the motion source's, which with two threads ran ahead.
 		for (const char* traj : {"trajectory_vlo.tum", "trajectory_vo.tum"})
 		{
-			const Trajectory t = readTum(out(traj));
+			const Trajectory t = io::readTum(out(traj));
 			ASSERT_FALSE(t.empty()) << traj;
 			EXPECT_NEAR(t.back().t, 0.3, 1e-9) << traj << " threads " << threads;
 		}
@@ -457,7 +458,7 @@ TEST_F(RunLoop, KittiPosesForTrajectoriesWithAPoseForEveryFrame)
 	RunRequest req{dir_ + "/drive.rawlog", dir_ + "/run.ini", dir_ + "/out", {"pipeline.mode=vlo"}, ""};
 	req.kitti_calib = dir_ + "/calib.txt";
 	runPipeline(req);
-	const Trajectory kitti = readKittiPoses(out("trajectory_vlo.kitti.txt"));
+	const Trajectory kitti = io::readKittiPoses(out("trajectory_vlo.kitti.txt"));
 	ASSERT_EQ(kitti.size(), std::size_t(kFrames));
 	// The vehicle's 0.5 m per frame along its x is camera 0's z.
 	EXPECT_NEAR(kitti.back().pose.translation().z(), kStep * (kFrames - 1), 1e-9);

@@ -11,6 +11,7 @@
 #include <sstream>
 
 using namespace vlo;
+using namespace vlo::pipeline;
 namespace fs = std::filesystem;
 
 namespace
@@ -81,8 +82,8 @@ TEST(RunReport, WrittenReportEmbedsPlotsThatExist)
 	const std::string dir = testing::TempDir() + "/run_report";
 	fs::remove_all(dir);
 	fs::create_directories(dir + "/snapshots");
-	writeTum(dir + "/trajectory_vlo.tum", line(40, 0.9 * 1.02));
-	writeTum(dir + "/gt.tum", line(40, 0.9));
+	io::writeTum(dir + "/trajectory_vlo.tum", line(40, 0.9 * 1.02));
+	io::writeTum(dir + "/gt.tum", line(40, 0.9));
 	std::ofstream(dir + "/frames.csv") << "frame\n";
 	RunSummary s;
 	s.mode = "vlo";

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 using namespace vlo;
+using namespace vlo::pipeline;
 
 TEST(StageTimings, MeanP95MaxAndCountOfEachTimingColumn)
 {

@@ -7,6 +7,7 @@
 #include <vector>
 
 using namespace vlo;
+using namespace vlo::pipeline;
 
 TEST(StageWorker, RunsEachJobOnceAndInOrderWithAndWithoutAThread)
 {

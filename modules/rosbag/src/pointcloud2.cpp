@@ -110,7 +110,7 @@ class Layout
 };
 }  // namespace
 
-ScanReading decodePointCloud2(const sensor_msgs::PointCloud2& msg, const std::string& where)
+io::ScanReading decodePointCloud2(const sensor_msgs::PointCloud2& msg, const std::string& where)
 {
 	const Layout layout(msg, where);
 	const FieldReader x = layout.require("x"), y = layout.require("y"), z = layout.require("z");
@@ -129,7 +129,7 @@ ScanReading decodePointCloud2(const sensor_msgs::PointCloud2& msg, const std::st
 	// Time as seconds from the stamp: "time" is that already, Ouster's "t" is ns, "timestamp" absolute.
 	double time_scale = time_name == "t" ? 1e-9 : 1.0, time_offset = time_name == "timestamp" ? -stamp : 0.0;
 
-	ScanReading out;
+	io::ScanReading out;
 	out.points.has_ring = ring.has_value();
 	out.points.has_time = time.has_value();
 	out.points.reserve(w * h);
@@ -167,7 +167,7 @@ ScanReading decodePointCloud2(const sensor_msgs::PointCloud2& msg, const std::st
 			out.points.push_back(q);
 		}
 	}
-	if (out.points.has_ring) orderRingsByElevation(out.points);
+	if (out.points.has_ring) io::orderRingsByElevation(out.points);
 	return out;
 }
 }  // namespace vlo::rosbag_io

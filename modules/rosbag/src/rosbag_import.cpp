@@ -296,7 +296,7 @@ RosbagImportSummary importRosbag(const RosbagImport& opt)
 	if (!opt.gt_topic.empty())
 		gt = groundTruth(bags, opt.gt_topic, place.tree, opt.vehicle_frame.empty() ? lidar_frame : opt.vehicle_frame, summary.warnings);
 
-	RawlogWriter writer(opt.out);
+	io::RawlogWriter writer(opt.out);
 	std::size_t counts[2] = {0, 0};
 	StampOrder<Frame> order(opt.reorder_window, 2, [&](double, int sensor, Frame&& f) {
 		f.index = counts[sensor]++;
@@ -327,8 +327,8 @@ RosbagImportSummary importRosbag(const RosbagImport& opt)
 			" messages dropped: their stamp repeats one, or is older than --reorder-window allows");
 	if (!gt.empty())
 	{
-		summary.ground_truth = groundTruthPathFor(opt.out);
-		writeTum(summary.ground_truth, gt);
+		summary.ground_truth = io::groundTruthPathFor(opt.out);
+		io::writeTum(summary.ground_truth, gt);
 		summary.gt_poses = gt.size();
 	}
 	summary.seconds = msSince(start) / 1000.0;

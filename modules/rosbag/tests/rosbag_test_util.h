@@ -35,14 +35,14 @@ inline const std::vector<Frame>& simFrames(Trajectory* gt = nullptr)
 		const std::string rawlog = (dir / "sim.rawlog").string();
 		const std::string cmd = std::string(VLO_BIN_DIR) + "/vlo-sim --scenario urban --lidar vlp16 --frames 8 --seed 3 --no-noise --quiet --out " + rawlog;
 		if (std::system(cmd.c_str()) != 0) ADD_FAILURE() << "failed: " << cmd;
-		RawlogReader reader(rawlog);
+		io::RawlogReader reader(rawlog);
 		for (Frame f; reader.next(f);)
 		{
 			f.image = mrpt::img::CImage(f.image.asCvMatRef().clone(), mrpt::img::SHALLOW_COPY);  // the files go below
 			addVlp16Fields(f.scan);
 			frames.push_back(f);
 		}
-		truth = readTum((dir / "sim.gt.tum").string());
+		truth = io::readTum((dir / "sim.gt.tum").string());
 		fs::remove_all(dir);
 	}
 	if (gt) *gt = truth;

@@ -149,8 +149,8 @@ TEST(RosbagImport, GroundTruthInTheVehicleFrameRelativeToTheFirstPose)
 		opt.gt_topic = layout.gt_topic;
 		opt.vehicle_frame = "base_link";
 		const auto summary = importRosbag(opt);
-		ASSERT_EQ(summary.ground_truth, groundTruthPathFor(opt.out));
-		const Trajectory got = readTum(summary.ground_truth);
+		ASSERT_EQ(summary.ground_truth, io::groundTruthPathFor(opt.out));
+		const Trajectory got = io::readTum(summary.ground_truth);
 		ASSERT_EQ(got.size(), gt.size());
 		for (std::size_t k = 0; k < gt.size(); ++k)
 		{

@@ -32,13 +32,13 @@ int main(int argc, char** argv)
 		layout.distortion_model = cl.get("distortion-model");
 		layout.drop_x = cl.has("drop-x");
 		std::vector<vlo::Frame> frames;
-		vlo::RawlogReader reader(cl.get("rawlog"));
+		vlo::io::RawlogReader reader(cl.get("rawlog"));
 		for (vlo::Frame f; reader.next(f);)
 		{
 			if (cl.has("vlp16-fields")) vlo::test::addVlp16Fields(f.scan);
 			frames.push_back(f);
 		}
-		const vlo::Trajectory gt = cl.has("gt") ? vlo::readTum(cl.get("gt")) : vlo::Trajectory{};
+		const vlo::Trajectory gt = cl.has("gt") ? vlo::io::readTum(cl.get("gt")) : vlo::Trajectory{};
 		vlo::test::writeBag(cl.get("out"), frames, gt, layout);
 		return 0;
 	});

@@ -53,9 +53,9 @@ double median(std::vector<double> v)
 std::vector<double> run(const fs::path& root, const std::string& seq, double k)
 {
 	const fs::path dir = root / "sequences" / seq;
-	const KittiOdometryCalib calib = readKittiOdometryCalib((dir / "calib.txt").string(), 2);
+	const io::KittiOdometryCalib calib = io::readKittiOdometryCalib((dir / "calib.txt").string(), 2);
 	Eigen::Isometry3d cam2_T_cam0 = Eigen::Isometry3d::Identity();
-	cam2_T_cam0.translation() = offsetOf(calib.P);
+	cam2_T_cam0.translation() = io::offsetOf(calib.P);
 	const std::vector<Eigen::Isometry3d> poses = readPoses(root / "poses" / (seq + ".txt"));
 	const auto file = [&](const char* folder, std::size_t i, const char* ext) {
 		char name[32];
@@ -64,13 +64,13 @@ std::vector<double> run(const fs::path& root, const std::string& seq, double k)
 	};
 	const auto image = [&](std::size_t i) { return cv::imread(file("image_2", i, ".png"), cv::IMREAD_GRAYSCALE); };
 	cv::Mat prev = image(0);
-	const PinholeCamera cam = intrinsicsOf(calib.P, prev.cols, prev.rows);
+	const PinholeCamera cam = io::intrinsicsOf(calib.P, prev.cols, prev.rows);
 	const ScaleCorrector corrector;
 	std::vector<double> s;
 	for (std::size_t i = 1; i < poses.size(); ++i)
 	{
 		PointCloud scan;
-		readKittiBin(file("velodyne", i - 1, ".bin"), scan);
+		io::readKittiBin(file("velodyne", i - 1, ".bin"), scan);
 		const cv::Mat cur = image(i);
 		Eigen::Isometry3d cur_T_prev = cam2_T_cam0 * poses[i].inverse() * poses[i - 1] * cam2_T_cam0.inverse();
 		cur_T_prev.translation() *= k;  // a VO whose lengths are k times the true ones

@@ -66,7 +66,7 @@ void KittiExporter::write(const Frame& f)
 	PointCloud reflectance = f.scan;  // KITTI's reflectance is in [0, 1], a timed scan's 8-bit
 	if (f.scan.has_time)
 		for (LidarPoint& p : reflectance) p.intensity /= 255.0f;
-	writeKittiBin(seq + "/velodyne/" + name + ".bin", reflectance);
+	io::writeKittiBin(seq + "/velodyne/" + name + ".bin", reflectance);
 }
 
 void KittiExporter::commit(const Trajectory& vehicle_gt)
@@ -96,7 +96,7 @@ void KittiExporter::commit(const Trajectory& vehicle_gt)
 		times.commit();
 	}
 	// Camera-0 motion: C_k = C_T_V * V_k * V_T_C.
-	writeKittiPoses(partial_ + "/poses/00.txt", vehicleToCamera(vehicle_gt, rig_.vehicle_T_camera.inverse()));
+	io::writeKittiPoses(partial_ + "/poses/00.txt", io::vehicleToCamera(vehicle_gt, rig_.vehicle_T_camera.inverse()));
 	std::error_code ec;
 	fs::remove_all(dir_, ec);
 	fs::rename(partial_, dir_, ec);

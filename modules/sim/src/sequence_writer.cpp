@@ -15,7 +15,7 @@ RunStats writeSequence(Simulator& sim, const OutputOptions& out)
 	const auto start = SteadyClock::now();
 	// Both writers keep their output under ".partial" names until they commit: an error (or Ctrl-C)
 	// half-way leaves no file that looks complete.
-	RawlogWriter rawlog(out.rawlog, true, out.compression, out.images);
+	io::RawlogWriter rawlog(out.rawlog, true, out.compression, out.images);
 	std::unique_ptr<KittiExporter> kitti;
 	if (!out.kitti_dir.empty()) kitti = std::make_unique<KittiExporter>(out.kitti_dir, sim.config().rig, out.description);
 	if (!out.progress) ProgressLine::setEnabled(false);
@@ -32,8 +32,8 @@ RunStats writeSequence(Simulator& sim, const OutputOptions& out)
 	progress.finish();
 	RunStats st;
 	const Trajectory gt = sim.groundTruth();
-	st.ground_truth = groundTruthPathFor(out.rawlog);
-	writeTum(st.ground_truth, gt);
+	st.ground_truth = io::groundTruthPathFor(out.rawlog);
+	io::writeTum(st.ground_truth, gt);
 	try
 	{
 		if (kitti) kitti->commit(gt);

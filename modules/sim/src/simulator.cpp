@@ -36,7 +36,7 @@ RoadStyle styleFor(Scenario sc)
 /// KITTI camera-0 poses -> vehicle poses in a world whose origin is the vehicle at frame 0.
 Trajectory vehicleFromKitti(const std::string& path, int frames, double rate, const SensorRig& rig)
 {
-	const Trajectory cam = readKittiPoses(path);
+	const Trajectory cam = io::readKittiPoses(path);
 	if (static_cast<int>(cam.size()) < frames)
 		failInput(path, "has " + std::to_string(cam.size()) + " poses, fewer than --frames " + std::to_string(frames));
 	const Eigen::Isometry3d VC = rig.vehicle_T_camera, C0inv = cam.front().pose.inverse();

@@ -29,7 +29,7 @@ TEST(KittiRoundTrip, ImportedExportHoldsTheSameFrames)
 	ASSERT_EQ(std::system(importCmd.c_str()), 0) << importCmd;
 	const char* simPath = simRawlog.c_str();
 	const char* impPath = imported.c_str();
-	RawlogReader sim(simPath), imp(impPath);
+	io::RawlogReader sim(simPath), imp(impPath);
 	Frame a, b;
 	std::size_t n = 0;
 	Eigen::Isometry3d L = Eigen::Isometry3d::Identity();  // vehicle_T_lidar of the simulator
@@ -56,7 +56,7 @@ TEST(KittiRoundTrip, ImportedExportHoldsTheSameFrames)
 	EXPECT_FALSE(imp.next(b)) << "imported rawlog has more frames";
 	EXPECT_EQ(n, 5u);  // --frames 5
 	// Ground truth: the importer's vehicle is the LiDAR, so its poses are the simulator's conjugated by L.
-	const Trajectory gs = readTum(groundTruthPathFor(simPath)), gi = readTum(groundTruthPathFor(impPath));
+	const Trajectory gs = io::readTum(io::groundTruthPathFor(simPath)), gi = io::readTum(io::groundTruthPathFor(impPath));
 	ASSERT_EQ(gs.size(), gi.size());
 	for (std::size_t k = 0; k < gs.size(); ++k)
 	{

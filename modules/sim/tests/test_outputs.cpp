@@ -82,7 +82,7 @@ TEST(Outputs, RawlogGroundTruthAndKittiExportHoldTheRenderedFrames)
 	}
 
 	// Rawlog: frames, times, rig, pixels and points.
-	RawlogReader reader(out.rawlog);
+	io::RawlogReader reader(out.rawlog);
 	Frame f;
 	int k = 0;
 	for (; reader.next(f); ++k)
@@ -99,7 +99,7 @@ TEST(Outputs, RawlogGroundTruthAndKittiExportHoldTheRenderedFrames)
 	EXPECT_EQ(k, 3);
 
 	// Ground truth: vehicle frame, relative to frame 0, the frame times.
-	const Trajectory gt = readTum(out.rawlog.substr(0, out.rawlog.size() - 7) + ".gt.tum");
+	const Trajectory gt = io::readTum(out.rawlog.substr(0, out.rawlog.size() - 7) + ".gt.tum");
 	ASSERT_EQ(gt.size(), 3u);
 	EXPECT_TRUE(gt[0].pose.isApprox(Eigen::Isometry3d::Identity(), 1e-9));
 	for (int i = 0; i < 3; ++i)
@@ -111,18 +111,18 @@ TEST(Outputs, RawlogGroundTruthAndKittiExportHoldTheRenderedFrames)
 
 	// KITTI export.
 	const std::string seq = out.kitti_dir + "/sequences/00";
-	const KittiOdometryCalib calib = readKittiOdometryCalib(seq + "/calib.txt");
+	const io::KittiOdometryCalib calib = io::readKittiOdometryCalib(seq + "/calib.txt");
 	ASSERT_TRUE(calib.has_tr);
 	EXPECT_TRUE(calib.cam0_T_velo.isApprox(rig.vehicle_T_camera.inverse() * rig.vehicle_T_lidar, 1e-9));
-	const PinholeCamera K = intrinsicsOf(calib.P0, 1241, 376);
+	const PinholeCamera K = io::intrinsicsOf(calib.P0, 1241, 376);
 	EXPECT_NEAR(K.fx, 718.856, 1e-9);
 	EXPECT_NEAR(K.cx, 607.1928, 1e-9);
-	const std::vector<double> times = readKittiTimes(seq + "/times.txt");
+	const std::vector<double> times = io::readKittiTimes(seq + "/times.txt");
 	ASSERT_EQ(times.size(), 3u);
 	EXPECT_NEAR(times[2], 0.2, 1e-9);
 	// poses/00.txt: camera 0 relative to camera 0 at frame 0 <=> the vehicle ground truth.
-	const Trajectory cam = readKittiPoses(out.kitti_dir + "/poses/00.txt", times);
-	const Trajectory veh = cameraToVehicle(cam, rig.vehicle_T_camera.inverse());
+	const Trajectory cam = io::readKittiPoses(out.kitti_dir + "/poses/00.txt", times);
+	const Trajectory veh = io::cameraToVehicle(cam, rig.vehicle_T_camera.inverse());
 	for (int i = 0; i < 3; ++i) EXPECT_TRUE(veh[i].pose.isApprox(gt[i].pose, 1e-6)) << i;
 	// Velodyne frame = LiDAR frame: the same floats as the rawlog.
 	for (int i = 0; i < 3; ++i)
@@ -130,7 +130,7 @@ TEST(Outputs, RawlogGroundTruthAndKittiExportHoldTheRenderedFrames)
 		char name[16];
 		std::snprintf(name, sizeof(name), "%06d", i);
 		PointCloud bin;
-		readKittiBin(seq + "/velodyne/" + name + ".bin", bin);
+		io::readKittiBin(seq + "/velodyne/" + name + ".bin", bin);
 		for (LidarPoint& p : bin) p.intensity *= 255.0f;  // KITTI's reflectance in [0, 1], the scan's 8-bit
 		EXPECT_TRUE(sameScan(bin, frames[i].scan)) << i;
 		mrpt::img::CImage png;

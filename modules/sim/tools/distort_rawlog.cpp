@@ -25,10 +25,10 @@ int main(int argc, char** argv)
 			std::cout << cl.usage("Usage: vlo-test-distort-rawlog --rawlog IN.rawlog --out OUT.rawlog --camera-distortion K1,K2,P1,P2");
 			return 0;
 		}
-		vlo::RawlogReaderOptions camera_only_too;  // a camera-only rawlog (e.g. KITTI's grey 06 sequence) is fine
+		vlo::io::RawlogReaderOptions camera_only_too;  // a camera-only rawlog (e.g. KITTI's grey 06 sequence) is fine
 		camera_only_too.need_lidar = false;
-		vlo::RawlogReader reader(cl.get("rawlog"), camera_only_too);
-		vlo::RawlogWriter writer(cl.get("out"));
+		vlo::io::RawlogReader reader(cl.get("rawlog"), camera_only_too);
+		vlo::io::RawlogWriter writer(cl.get("out"));
 		std::optional<vlo::sim::LensMaps> maps;  // built once: the camera is the same for every frame
 		vlo::PinholeCamera lens;
 		for (vlo::Frame f; reader.next(f);)

@@ -16,7 +16,7 @@ Trajectory groundTruthOf(const RunSnapshots& run)
 	Trajectory gt;
 	if (run.gt_path.empty()) return gt;
 	const double t0 = run.t_first - 1e-6, t1 = run.t_last + 1e-6;
-	for (const auto& p : readTum(run.gt_path))
+	for (const auto& p : io::readTum(run.gt_path))
 		if (p.t >= t0 && p.t <= t1) gt.push_back(p);
 	return relativeToFirst(gt);
 }

@@ -111,7 +111,7 @@ TEST_F(Example, Map3DOfAStreet)
 {
 	const Trajectory gt = synth::curvedDrive(1000);
 	const PointCloud map = synth::streetMap(gt, 3);
-	writePcd(kOut + "street_map.pcd", map);
+	io::writePcd(kOut + "street_map.pcd", map);
 	const std::vector<NamedTrajectory> trajs{{"vlo (VO + LiDAR)", synth::driftingEstimate(gt, 0.01, 2e-5, 1, 1), {}}};
 	Map3DStyle style;
 	style.width = 1500, style.height = 900;

@@ -23,16 +23,16 @@ TEST(Kitti, Sequence06SampleWithinSim3Bound)
 	fs::remove_all(dir);
 	fs::create_directories(dir);
 	ASSERT_EQ(std::system(("tar -xJf '" + archive + "' -C '" + dir.string() + "'").c_str()), 0);
-	KittiOdometryImport imp;
+	io::KittiOdometryImport imp;
 	imp.root = (dir / "kitti_odometry_06_0000-0050").string();
 	imp.seq = "06";
 	imp.out = (dir / "06.rawlog").string();
-	const auto summary = importKittiOdometry(imp);
+	const auto summary = io::importKittiOdometry(imp);
 	ASSERT_EQ(summary.frames, 51u);
 
-	RawlogReaderOptions ropt;
+	io::RawlogReaderOptions ropt;
 	ropt.need_lidar = false;
-	RawlogReader reader(imp.out, ropt);
+	io::RawlogReader reader(imp.out, ropt);
 	Frame f;
 	std::unique_ptr<VisualOdometry> vo;
 	Trajectory est;
@@ -46,7 +46,7 @@ TEST(Kitti, Sequence06SampleWithinSim3Bound)
 		if (info.pose) est.push_back({f.t, test::toVehicle(f.rig, *info.pose, info.metric)});
 	}
 	ASSERT_EQ(infos.size(), 51u);
-	const Trajectory gt = readTum(summary.ground_truth);
+	const Trajectory gt = io::readTum(summary.ground_truth);
 	int first = -1;
 	for (const auto& i : infos)
 		if (i.pose && first < 0) first = static_cast<int>(i.index);

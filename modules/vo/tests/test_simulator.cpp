@@ -25,9 +25,9 @@ TEST(Simulator, UrbanSequenceWithinSim3Bound)
 	const std::string cmd = sim + " --scenario urban --lidar vlp16 --frames 50 --seed 5 --quiet --out '" + rawlog + "'";
 	ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
 
-	RawlogReaderOptions ropt;
+	io::RawlogReaderOptions ropt;
 	ropt.need_lidar = false;
-	RawlogReader reader(rawlog, ropt);
+	io::RawlogReader reader(rawlog, ropt);
 	Frame f;
 	std::unique_ptr<VisualOdometry> vo;
 	Trajectory est;
@@ -49,7 +49,7 @@ TEST(Simulator, UrbanSequenceWithinSim3Bound)
 	EXPECT_LE(first, 5);
 	EXPECT_EQ(static_cast<int>(est.size()), frames - first);
 	EXPECT_EQ(reinits, 0);
-	const Trajectory gt = readTum((dir / "urban.gt.tum").string());
+	const Trajectory gt = io::readTum((dir / "urban.gt.tum").string());
 	const auto ate = test::ateSim3(gt, est);
 	const double length = pathLength(gt);
 	std::cout << "vlo-sim urban (VLP-16 rig camera), 50 frames: Sim(3) ATE " << ate.ate_rmse_m << " m over " << length

@@ -2,7 +2,7 @@
 // A cap on the size of one allocation on this thread, for reading untrusted files.
 #include <cstddef>
 
-namespace vlo
+namespace vlo::io
 {
 /// While alive, asks that an mrpt::aligned_malloc or operator new above `max_bytes` on this thread throw
 /// std::bad_alloc. Only a program that links vlo::corrupt_input_guard (modules/io/corrupt_input_guard/,
@@ -21,4 +21,4 @@ class ScopedAllocationLimit
 
 /// The largest allocation this thread may make now (SIZE_MAX outside a ScopedAllocationLimit).
 std::size_t allocationLimit() noexcept;
-}  // namespace vlo
+}  // namespace vlo::io

@@ -11,7 +11,7 @@
 #include <cstddef>
 #include <string>
 
-namespace vlo
+namespace vlo::io
 {
 /// Seconds (as in the dataset) <-> MRPT timestamps, rounded to MRPT's 100 ns ticks (MRPT's own
 /// Clock::fromDouble truncates, which loses a tick on values like KITTI's 0.3116343).
@@ -36,4 +36,4 @@ Eigen::Isometry3d camera0FromNote(const mrpt::obs::CObservationComment& note, co
 
 /// Grayscale version of an image (no copy when it already is).
 mrpt::img::CImage toGray(const mrpt::img::CImage& img);
-}  // namespace vlo
+}  // namespace vlo::io

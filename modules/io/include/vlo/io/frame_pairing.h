@@ -3,7 +3,7 @@
 // timestamp. Pure and streaming: it looks only at the heads of two queues of times.
 #include <deque>
 
-namespace vlo
+namespace vlo::io
 {
 enum class PairStep
 {
@@ -17,4 +17,4 @@ enum class PairStep
 /// Each queue holds increasing times. A pair is formed when each head is the other's nearest
 /// partner within `tolerance` seconds. With `no_more` set, missing look-ahead counts as absent.
 PairStep pairStep(const std::deque<double>& images, const std::deque<double>& scans, double tolerance, bool no_more);
-}  // namespace vlo
+}  // namespace vlo::io

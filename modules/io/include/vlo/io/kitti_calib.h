@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::io
 {
 using Matrix34d = Eigen::Matrix<double, 3, 4>;
 
@@ -78,4 +78,4 @@ KittiRawCalib readKittiRawCalib(const std::string& cam_to_cam, const std::string
 
 /// calib_imu_to_velo.txt's R, T: velo_T_imu (x_velo = R x_imu + T).
 Eigen::Isometry3d readKittiImuToVelo(const std::string& imu_to_velo);
-}  // namespace vlo
+}  // namespace vlo::io

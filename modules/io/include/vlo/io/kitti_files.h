@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::io
 {
 /// Reads a KITTI Velodyne scan: float32 x, y, z, reflectance per point, Velodyne frame. Points with
 /// a non-finite value are dropped; returns how many. Throws InputError naming the file if it is
@@ -20,4 +20,4 @@ bool parseKittiDate(const std::string& text, double& seconds);
 /// Reads a KITTI raw timestamps.txt (one date per line). Throws InputError naming the file and line
 /// for a malformed date or a time that does not increase.
 std::vector<double> readKittiRawTimestamps(const std::string& path);
-}  // namespace vlo
+}  // namespace vlo::io

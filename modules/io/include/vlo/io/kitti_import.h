@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::io
 {
 struct ImportSummary
 {
@@ -38,4 +38,4 @@ ImportSummary importKittiRaw(const KittiRawImport& opt);
 
 /// "X.gt.tum" for "X.rawlog" (any other name gets ".gt.tum" appended).
 std::string groundTruthPathFor(const std::string& rawlog_path);
-}  // namespace vlo
+}  // namespace vlo::io

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::io
 {
 /// The first six values of an OXTS record: position and orientation of the IMU.
 struct OxtsRecord
@@ -28,4 +28,4 @@ std::vector<Eigen::Isometry3d> oxtsPoses(const std::vector<OxtsRecord>& records)
 /// The records as a trajectory of the Velodyne frame relative to its first pose, at the records' times.
 Trajectory oxtsVelodyneTrajectory(
 	const std::vector<OxtsRecord>& records, const std::vector<double>& times, const Eigen::Isometry3d& velo_T_imu);
-}  // namespace vlo
+}  // namespace vlo::io

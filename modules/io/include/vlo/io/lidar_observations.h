@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <string>
 
-namespace vlo
+namespace vlo::io
 {
 /// Observation of frame.scan (stamped frame.t) with the rig's LiDAR pose.
 mrpt::obs::CObservation::Ptr toScanObservation(const Frame& frame, const std::string& label);
@@ -37,4 +37,4 @@ ScanReading readScanObservation(mrpt::obs::CObservation& obs, const std::string&
 /// whatever order the driver numbered its lasers in: ids already bottom-up are kept, top-down ids
 /// (Ouster) are flipped (both keep gaps of lasers without returns), interleaved ids are ranked.
 void orderRingsByElevation(PointCloud& cloud);
-}  // namespace vlo
+}  // namespace vlo::io

@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace vlo
+namespace vlo::io
 {
 enum class PcdFormat
 {
@@ -20,4 +20,4 @@ void writePcd(const std::string& path, const PointCloud& cloud, PcdFormat format
 /// Points with a non-finite x, y or z (PCL's organised clouds hold NaN for no return) are dropped.
 /// Throws InputError naming the file (and the header line) for a malformed or truncated file.
 PointCloud readPcd(const std::string& path);
-}  // namespace vlo
+}  // namespace vlo::io

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-namespace vlo
+namespace vlo::io
 {
 struct RawlogReaderOptions
 {
@@ -61,4 +61,4 @@ class RawlogReader
 	struct Impl;
 	std::unique_ptr<Impl> impl_;
 };
-}  // namespace vlo
+}  // namespace vlo::io

@@ -16,7 +16,7 @@ namespace mrpt::obs
 class CObservation;
 }
 
-namespace vlo
+namespace vlo::io
 {
 /// "<dir>/<name>_Images" for "<dir>/<name>.<ext>": where MRPT looks for a rawlog's external images.
 std::string rawlogImagesDir(const std::string& rawlog_path);
@@ -66,4 +66,4 @@ class RawlogWriter
 	struct Impl;
 	std::unique_ptr<Impl> impl_;
 };
-}  // namespace vlo
+}  // namespace vlo::io

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::io
 {
 /// Reads a TUM file. '#' comments and blank lines are skipped. Throws InputError naming the file and
 /// line for a malformed or non-finite line, and for timestamps that do not increase.
@@ -34,4 +34,4 @@ std::vector<double> readKittiTimes(const std::string& path);
 /// V_k = Tr^-1 * C_k * Tr, so both start at identity when C_0 is identity.
 Trajectory cameraToVehicle(const Trajectory& cam0, const Eigen::Isometry3d& cam0_T_velo);
 Trajectory vehicleToCamera(const Trajectory& vehicle, const Eigen::Isometry3d& cam0_T_velo);
-}  // namespace vlo
+}  // namespace vlo::io

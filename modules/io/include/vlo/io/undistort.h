@@ -6,7 +6,7 @@
 
 #include <memory>
 
-namespace vlo
+namespace vlo::io
 {
 class ImageUndistorter
 {
@@ -22,4 +22,4 @@ class ImageUndistorter
 	struct Maps;
 	std::unique_ptr<Maps> maps_;
 };
-}  // namespace vlo
+}  // namespace vlo::io

@@ -17,7 +17,7 @@
 #include <mutex>
 #include <thread>
 
-namespace vlo
+namespace vlo::pipeline
 {
 /// A frame as read, with what the LiDAR odometry prepared of it on the reading thread.
 struct ReadFrame
@@ -36,7 +36,7 @@ class FramePrefetcher
 	/// `ahead` = frames read in advance (0: no thread, next() reads on the caller's thread);
 	/// `limit` = frames to read at most (0 = all); `prepare`, if given, runs on each frame read,
 	/// on the reading thread.
-	FramePrefetcher(RawlogReader& reader, std::size_t ahead, std::size_t limit, Prepare prepare = {});
+	FramePrefetcher(io::RawlogReader& reader, std::size_t ahead, std::size_t limit, Prepare prepare = {});
 	/// Stops reading and waits for the thread.
 	~FramePrefetcher();
 	FramePrefetcher(const FramePrefetcher&) = delete;
@@ -53,7 +53,7 @@ class FramePrefetcher
 	void readAhead();
 	bool readOne(ReadFrame& read);
 
-	RawlogReader& reader_;
+	io::RawlogReader& reader_;
 	const std::size_t ahead_, limit_;
 	const Prepare prepare_;
 	std::size_t read_ = 0;  ///< frames taken from the reader
@@ -66,4 +66,4 @@ class FramePrefetcher
 	std::exception_ptr error_;
 	std::thread thread_;
 };
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -9,7 +9,7 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 
-namespace vlo
+namespace vlo::pipeline
 {
 class GlobalMap
 {
@@ -43,4 +43,4 @@ class GlobalMap
 	VoxelHashMap occupied_;  ///< voxel key -> nothing (a set)
 	PointCloud points_;
 };
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace vlo
+namespace vlo::pipeline
 {
 /// What a run does, decided from the mode in this one place: frame -> motion source -> LiDAR
 /// odometry -> outputs, with either stage left out.
@@ -57,4 +57,4 @@ struct PipelineOptions : public OptionSet
    protected:
 	void declare(OptionTable& t) override;
 };
-}  // namespace vlo
+}  // namespace vlo::pipeline

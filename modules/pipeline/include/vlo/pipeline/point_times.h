@@ -8,7 +8,7 @@
 
 #include <string>
 
-namespace vlo
+namespace vlo::pipeline
 {
 enum class PointTimes
 {
@@ -37,4 +37,4 @@ struct PointTimeOptions : public OptionSet
 void applyPointTimes(PointCloud& scan, const PointTimeOptions& options);
 /// "sensor", "azimuth" or "none": where the scan's times came from, for frames.csv.
 const char* pointTimeSource(const PointCloud& scan);
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace vlo
+namespace vlo::pipeline
 {
 struct RunRequest
 {
@@ -41,4 +41,4 @@ struct RunSummary
 /// early, on Ctrl-C (Interrupted) or input that fails after its first frames (InputError), first writes
 /// the outputs of the frames it computed, with summary.json's "complete": false, then throws saying so.
 RunSummary runPipeline(const RunRequest& request);
-}  // namespace vlo
+}  // namespace vlo::pipeline

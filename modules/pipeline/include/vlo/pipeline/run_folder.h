@@ -5,7 +5,7 @@
 #include <set>
 #include <string>
 
-namespace vlo
+namespace vlo::pipeline
 {
 /// Relative paths of the regular files where a run writes: in dir itself and under dir/snapshots. Nothing else
 /// is walked, so a folder such as / (with /proc) or /usr/share costs one listing and raises nothing.
@@ -36,4 +36,4 @@ class RunFolder
 	std::set<std::string> before_;  ///< relative paths of the files that are not this run's
 	std::string first_made_;  ///< the highest folder of dir_ that clearPreviousRun() found missing, if any
 };
-}  // namespace vlo
+}  // namespace vlo::pipeline

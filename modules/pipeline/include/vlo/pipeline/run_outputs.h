@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-namespace vlo
+namespace vlo::pipeline
 {
 struct RunOutputs
 {
@@ -44,4 +44,4 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const MotionSou
 
 /// summary.json: mode, frames, timing, path length, largest step, reader statistics, inputs, the per-stage timings.
 void writeSummaryJson(const std::string& path, const RunSummary& s, const RunRequest& req);
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::pipeline
 {
 /// snapshots/time_per_stage.png from the table's ms_* columns (vlo/viz/stage_time_plot.h); nothing when the
 /// table has no stage time.
@@ -21,4 +21,4 @@ std::string runReportMarkdown(const RunSummary& s, const RunRequest& req, const 
 /// `plots`), draws the stage-time plot (when `plots`) and writes DIR/report.md atomically, linking
 /// only files that exist in DIR.
 void writeRunReport(const std::string& dir, const RunSummary& s, const RunRequest& req, const FrameTable& table, bool plots);
-}  // namespace vlo
+}  // namespace vlo::pipeline

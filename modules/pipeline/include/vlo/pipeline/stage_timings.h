@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::pipeline
 {
 struct StageTiming
 {
@@ -21,4 +21,4 @@ std::vector<StageTiming> stageTimings(const FrameTable& table);
 
 /// A fixed-width table, one stage a line, with a header.
 std::string formatStageTimings(const std::vector<StageTiming>& timings);
-}  // namespace vlo
+}  // namespace vlo::pipeline

@@ -11,7 +11,7 @@
 #include <mutex>
 #include <thread>
 
-namespace vlo
+namespace vlo::pipeline
 {
 class StageWorker
 {
@@ -42,4 +42,4 @@ class StageWorker
 	std::exception_ptr error_;
 	std::thread thread_;
 };
-}  // namespace vlo
+}  // namespace vlo::pipeline

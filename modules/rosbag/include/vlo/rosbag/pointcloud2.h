@@ -15,5 +15,5 @@ namespace vlo::rosbag_io
 ///  time: "time" (s from the stamp, Velodyne), "t" (ns from the stamp, Ouster), "timestamp" (absolute s,
 ///  Hesai / Livox; values 1e9 times too large for seconds are read as ns).
 /// Throws InputError(where, ...) for a missing x/y/z field or a layout that does not fit the data.
-ScanReading decodePointCloud2(const sensor_msgs::PointCloud2& msg, const std::string& where);
+io::ScanReading decodePointCloud2(const sensor_msgs::PointCloud2& msg, const std::string& where);
 }  // namespace vlo::rosbag_io

@@ -11,8 +11,8 @@ namespace vlo::sim
 struct OutputOptions
 {
 	std::string rawlog;  ///< FILE.rawlog
-	RawlogCompression compression = RawlogCompression::Gzip;
-	ImageFileFormat images = ImageFileFormat::Png;
+	io::RawlogCompression compression = io::RawlogCompression::Gzip;
+	io::ImageFileFormat images = io::ImageFileFormat::Png;
 	std::string kitti_dir;  ///< "" = no KITTI export
 	std::string description;  ///< recorded in the KITTI export (the command line)
 	bool progress = true;

@@ -25,20 +25,20 @@ std::string cell(std::string text)
 }
 
 /// Every section that vlo-run can load: [pipeline] and those of each registered module.
-RunConfig loadEverySection()
+kernel::RunConfig loadEverySection()
 {
-	auto config = RunConfig::fromString("", "none.ini");
+	auto config = kernel::RunConfig::fromString("", "none.ini");
 	pipeline::PipelineOptions pipeline;
 	config.load(pipeline, "pipeline");
 	pipeline::PointTimeOptions times;
 	config.load(times, "lidar");
-	for (auto& [name, m] : registry<VisualOdometryModule>().createAll()) m->configure(config);
-	for (auto& [name, m] : registry<ScaleCorrectionModule>().createAll()) m->configure(config, 0);
-	for (auto& [name, m] : registry<LidarOdometryModule>().createAll()) m->configure(config);
+	for (auto& [name, m] : kernel::registry<kernel::VisualOdometryModule>().createAll()) m->configure(config);
+	for (auto& [name, m] : kernel::registry<kernel::ScaleCorrectionModule>().createAll()) m->configure(config, 0);
+	for (auto& [name, m] : kernel::registry<kernel::LidarOdometryModule>().createAll()) m->configure(config);
 	return config;
 }
 
-std::string render(const RunConfig& config)
+std::string render(const kernel::RunConfig& config)
 {
 	std::ostringstream md;
 	md << "# INI options\n\n"

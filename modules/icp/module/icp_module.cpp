@@ -6,17 +6,17 @@ namespace vlo
 {
 namespace
 {
-class IcpModule : public LidarOdometryModule
+class IcpModule : public kernel::LidarOdometryModule
 {
    public:
-	void configure(RunConfig& config) override
+	void configure(kernel::RunConfig& config) override
 	{
 		config.load(opt_, "icp");
 		odometry_ = std::make_unique<icp::IcpOdometry>(opt_);
 	}
 
-	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> /*prepared*/,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> /*prepared*/,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
 	{
 		mount_.observe(frame);
 		const auto r = odometry_->process(frame.t, frame.scan, mount_.lidarMotion(vehicle_motion));
@@ -40,8 +40,8 @@ class IcpModule : public LidarOdometryModule
    private:
 	icp::IcpOptions opt_;
 	std::unique_ptr<icp::IcpOdometry> odometry_;
-	LidarMount mount_;
+	kernel::LidarMount mount_;
 };
-VLO_REGISTER_MODULE(LidarOdometryModule, "icp", IcpModule);
+VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "icp", IcpModule);
 }  // namespace
 }  // namespace vlo

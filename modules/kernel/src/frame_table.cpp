@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <limits>
 
-namespace vlo
+namespace vlo::kernel
 {
 namespace
 {
@@ -137,4 +137,4 @@ void FrameTable::write(const std::string& path) const
 	}
 	f.commit();
 }
-}  // namespace vlo
+}  // namespace vlo::kernel

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace vlo
+namespace vlo::kernel
 {
 namespace
 {
@@ -114,4 +114,4 @@ void RunConfig::checkAllKeysUsed() const
 		}
 	}
 }
-}  // namespace vlo
+}  // namespace vlo::kernel

@@ -7,6 +7,7 @@
 #include <sstream>
 
 using namespace vlo;
+using namespace vlo::kernel;
 
 TEST(FrameTable, ColumnsInFirstSeenOrderAndCsvQuoting)
 {

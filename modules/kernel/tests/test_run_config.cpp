@@ -6,6 +6,7 @@
 #include <fstream>
 
 using namespace vlo;
+using namespace vlo::kernel;
 
 using test::DemoOptions;
 using test::errorOf;

@@ -9,16 +9,16 @@ namespace vlo
 namespace
 {
 /// The scan's rings and features, extracted ahead of its turn.
-struct PreparedLoamScan : PreparedScan
+struct PreparedLoamScan : kernel::PreparedScan
 {
 	explicit PreparedLoamScan(loam::ScanFeatures f) : features(std::move(f)) {}
 	loam::ScanFeatures features;
 };
 
-class AloamModule : public LidarOdometryModule
+class AloamModule : public kernel::LidarOdometryModule
 {
    public:
-	void configure(RunConfig& config) override
+	void configure(kernel::RunConfig& config) override
 	{
 		// In a run the caller decides whether LOAM gets a guess ([pipeline] bootstrapping); with none,
 		// the external prior is constant velocity, as in A-LOAM. constant_velocity ignores any guess.
@@ -30,13 +30,13 @@ class AloamModule : public LidarOdometryModule
 	}
 
 	// The scan's rings and features (its own extractor: prepare and process may run on two threads).
-	std::unique_ptr<PreparedScan> prepare(const Frame& frame) override
+	std::unique_ptr<kernel::PreparedScan> prepare(const Frame& frame) override
 	{
 		return std::make_unique<PreparedLoamScan>(ahead_->extract(frame.scan));
 	}
 
-	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
 	{
 		mount_.observe(frame);
 		ring_check_->observe(frame.scan);
@@ -76,8 +76,8 @@ class AloamModule : public LidarOdometryModule
 	std::unique_ptr<loam::LidarOdometry> lo_;
 	std::optional<loam::ScanFeatureExtractor> ahead_;
 	std::optional<loam::RingModelCheck> ring_check_;
-	LidarMount mount_;
+	kernel::LidarMount mount_;
 };
-VLO_REGISTER_MODULE(LidarOdometryModule, "aloam", AloamModule);
+VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "aloam", AloamModule);
 }  // namespace
 }  // namespace vlo

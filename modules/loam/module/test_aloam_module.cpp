@@ -49,11 +49,11 @@ Drive drive()
 std::pair<Eigen::Isometry3d, std::string> run(const Drive& d, const std::optional<Eigen::Isometry3d>& guess,
 	const std::vector<std::string>& sets = {})
 {
-	auto config = RunConfig::fromString("[loam.scan]\nring_model = hdl64\n", "test.ini", sets);
-	auto lo = registry<LidarOdometryModule>().create("aloam", "test");
+	auto config = kernel::RunConfig::fromString("[loam.scan]\nring_model = hdl64\n", "test.ini", sets);
+	auto lo = kernel::registry<kernel::LidarOdometryModule>().create("aloam", "test");
 	lo->configure(config);
 	config.checkAllKeysUsed();
-	FrameTable table;
+	kernel::FrameTable table;
 	table.newRow();
 	lo->process(d.a, nullptr, std::nullopt, table);
 	table.newRow();

@@ -16,31 +16,31 @@ namespace vlo::pipeline
 {
 namespace
 {
-class MetricMonoVo : public MotionSource
+class MetricMonoVo : public kernel::MotionSource
 {
    public:
-	void configure(RunConfig& config, const MotionSourceSetup& setup) override
+	void configure(kernel::RunConfig& config, const kernel::MotionSourceSetup& setup) override
 	{
 		const std::string where = config.where("pipeline", "visual_odometry");
-		auto vo = registry<VisualOdometryModule>().create(setup.visual_odometry, where);
-		vo_.reset(dynamic_cast<MonocularVisualOdometry*>(vo.get()));
+		auto vo = kernel::registry<kernel::VisualOdometryModule>().create(setup.visual_odometry, where);
+		vo_.reset(dynamic_cast<kernel::MonocularVisualOdometry*>(vo.get()));
 		if (!vo_) failInput(where, "'" + setup.visual_odometry + "' is not a monocular VO, which motion_source = metric_mono needs (a metric VO: motion_source = visual)");
 		vo.release();
 		vo_->configure(config);
 		vo_->useThreads(setup.threads);
-		scale_ = registry<ScaleCorrectionModule>().create(
+		scale_ = kernel::registry<kernel::ScaleCorrectionModule>().create(
 			setup.scale_correction, config.where("pipeline", "scale_correction"));
 		scale_->configure(config, setup.snapshot_every);
 	}
 
-	std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, FrameTable& table) override
+	std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, kernel::FrameTable& table) override
 	{
 		auto t0 = SteadyClock::now();
-		const VisualOdometryStep step = vo_->process(*frame, table);
+		const kernel::VisualOdometryStep step = vo_->process(*frame, table);
 		table.set("ms_vo", lapMs(t0), 2);
-		const ScaleCorrection correction = scale_->process(prev_.get(), *frame, step, table);
+		const kernel::ScaleCorrection correction = scale_->process(prev_.get(), *frame, step, table);
 		// A correction comes only for a frame tracked in a map, which the VO can scale.
-		if (correction.apply() && !vo_->rescale(correction.factor, correction.kind == ScaleCorrection::Kind::Initial))
+		if (correction.apply() && !vo_->rescale(correction.factor, correction.kind == kernel::ScaleCorrection::Kind::Initial))
 			throw std::logic_error("frame " + std::to_string(frame->index) + ": the VO had no map to scale");
 		if (!path_) path_.emplace(frame->rig.vehicle_T_camera);
 		const auto motion = path_->update(frame->t, step, correction);
@@ -54,11 +54,11 @@ class MetricMonoVo : public MotionSource
 	std::vector<std::pair<std::string, double>> figures() const override { return scale_->figures(); }
 
    private:
-	std::unique_ptr<MonocularVisualOdometry> vo_;
-	std::unique_ptr<ScaleCorrectionModule> scale_;
+	std::unique_ptr<kernel::MonocularVisualOdometry> vo_;
+	std::unique_ptr<kernel::ScaleCorrectionModule> scale_;
 	std::optional<MetricVoPath> path_;
 	std::shared_ptr<const Frame> prev_;  ///< the previous frame, shared with the run loop
 };
-VLO_REGISTER_MODULE(MotionSource, "metric_mono", MetricMonoVo);
+VLO_REGISTER_MODULE(kernel::MotionSource, "metric_mono", MetricMonoVo);
 }  // namespace
 }  // namespace vlo::pipeline

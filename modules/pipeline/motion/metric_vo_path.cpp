@@ -18,7 +18,7 @@ void MetricVoPath::push(double t, const Eigen::Isometry3d& camera_pose)
 }
 
 std::optional<Eigen::Isometry3d> MetricVoPath::update(
-	double t, const VisualOdometryStep& step, const ScaleCorrection& correction)
+	double t, const kernel::VisualOdometryStep& step, const kernel::ScaleCorrection& correction)
 {
 	if (step.new_map)
 	{
@@ -31,7 +31,7 @@ std::optional<Eigen::Isometry3d> MetricVoPath::update(
 	if (!metric_)
 	{
 		pending_.emplace_back(t, *step.camera_map_pose);
-		if (correction.kind != ScaleCorrection::Kind::Initial) return std::nullopt;
+		if (correction.kind != kernel::ScaleCorrection::Kind::Initial) return std::nullopt;
 		// The map's first scale multiplies the whole map about its frame: so do its frames so far.
 		for (const auto& [tp, mapPose] : pending_) push(tp, origin_ * scaled(mapPose, correction.factor));
 		pending_.clear();

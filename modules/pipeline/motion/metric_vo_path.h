@@ -21,7 +21,7 @@ class MetricVoPath
 	/// Call once per frame with the VO's step and the scale corrector's decision at that frame (which
 	/// the VO's map takes before the next). Returns the metric motion of the vehicle since the
 	/// previous frame (the LiDAR odometry's initial guess) when it is known.
-	std::optional<Eigen::Isometry3d> update(double t, const VisualOdometryStep& step, const ScaleCorrection& correction);
+	std::optional<Eigen::Isometry3d> update(double t, const kernel::VisualOdometryStep& step, const kernel::ScaleCorrection& correction);
 
 	/// Vehicle poses relative to the vehicle where the first map began, metres.
 	const Trajectory& trajectory() const { return path_; }

@@ -8,20 +8,20 @@ namespace vlo::pipeline
 {
 namespace
 {
-class VisualSource : public MotionSource
+class VisualSource : public kernel::MotionSource
 {
    public:
-	void configure(RunConfig& config, const MotionSourceSetup& setup) override
+	void configure(kernel::RunConfig& config, const kernel::MotionSourceSetup& setup) override
 	{
-		vo_ = registry<VisualOdometryModule>().create(setup.visual_odometry, config.where("pipeline", "visual_odometry"));
+		vo_ = kernel::registry<kernel::VisualOdometryModule>().create(setup.visual_odometry, config.where("pipeline", "visual_odometry"));
 		vo_->configure(config);
 		vo_->useThreads(setup.threads);
 	}
 
-	std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, FrameTable& table) override
+	std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, kernel::FrameTable& table) override
 	{
 		auto t0 = SteadyClock::now();
-		const VisualOdometryStep step = vo_->process(*frame, table);
+		const kernel::VisualOdometryStep step = vo_->process(*frame, table);
 		table.set("ms_vo", lapMs(t0), 2);
 		mount_.observe(*frame);
 		if (step.camera_pose) path_.push_back({frame->t, mount_.vehicle(*step.camera_pose, step.metric)});
@@ -33,10 +33,10 @@ class VisualSource : public MotionSource
 	std::string label() const override { return "visual odometry"; }
 
    private:
-	std::unique_ptr<VisualOdometryModule> vo_;
-	CameraMount mount_;
+	std::unique_ptr<kernel::VisualOdometryModule> vo_;
+	kernel::CameraMount mount_;
 	Trajectory path_;
 };
-VLO_REGISTER_MODULE(MotionSource, "visual", VisualSource);
+VLO_REGISTER_MODULE(kernel::MotionSource, "visual", VisualSource);
 }  // namespace
 }  // namespace vlo::pipeline

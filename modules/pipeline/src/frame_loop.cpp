@@ -17,7 +17,7 @@ namespace
 struct FrameInFlight : ReadFrame
 {
 	std::optional<Eigen::Isometry3d> motion;  ///< of the vehicle since the previous frame
-	FrameTable motion_row;  ///< the motion source's columns
+	kernel::FrameTable motion_row;  ///< the motion source's columns
 	double ms = 0;  ///< spent in the motion source
 };
 }  // namespace
@@ -42,7 +42,7 @@ void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOpt
 	// module's calls, and with it every output, is the same as with one thread.
 	constexpr std::size_t kAhead = 3;
 	const auto lidarAndRow = [&](FrameInFlight& done) {
-		FrameTable lidarRow;
+		kernel::FrameTable lidarRow;
 		std::optional<Eigen::Isometry3d> pose;
 		double lidarMs = 0;
 		if (stages.lidar)

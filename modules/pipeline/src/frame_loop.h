@@ -25,8 +25,8 @@ struct InputEndedEarly : InputError
 /// The modules of a run, created by name and configured.
 struct Stages
 {
-	std::unique_ptr<MotionSource> motion;
-	std::unique_ptr<LidarOdometryModule> lidar;
+	std::unique_ptr<kernel::MotionSource> motion;
+	std::unique_ptr<kernel::LidarOdometryModule> lidar;
 };
 
 /// Runs the reader's frames (up to [pipeline] max_frames) through the stages: one row of

@@ -73,31 +73,31 @@ void prepareOutputDir(const std::string& dir)
 /// checks its sections, so that the sections of a module not chosen are no error and a typo is one
 /// whichever module runs.
 template <class Family, class... Args>
-void checkOptionsOfAll(RunConfig& config, const Args&... args)
+void checkOptionsOfAll(kernel::RunConfig& config, const Args&... args)
 {
-	for (auto& [name, module] : registry<Family>().createAll()) module->configure(config, args...);
+	for (auto& [name, module] : kernel::registry<Family>().createAll()) module->configure(config, args...);
 }
 
 /// Creates and configures the modules the plan runs, and no other.
-Stages makeStages(const PipelineOptions& popt, const RunPlan& plan, RunConfig& config)
+Stages makeStages(const PipelineOptions& popt, const RunPlan& plan, kernel::RunConfig& config)
 {
 	const auto where = [&config](const char* key) { return config.where("pipeline", key); };
-	registry<MotionSource>().require(popt.motion_source, where("motion_source"));
-	registry<VisualOdometryModule>().require(popt.visual_odometry, where("visual_odometry"));
-	registry<ScaleCorrectionModule>().require(popt.scale_correction, where("scale_correction"));
-	registry<LidarOdometryModule>().require(popt.lidar_odometry, where("lidar_odometry"));
-	checkOptionsOfAll<VisualOdometryModule>(config);
-	checkOptionsOfAll<ScaleCorrectionModule>(config, 0);
-	checkOptionsOfAll<LidarOdometryModule>(config);
+	kernel::registry<kernel::MotionSource>().require(popt.motion_source, where("motion_source"));
+	kernel::registry<kernel::VisualOdometryModule>().require(popt.visual_odometry, where("visual_odometry"));
+	kernel::registry<kernel::ScaleCorrectionModule>().require(popt.scale_correction, where("scale_correction"));
+	kernel::registry<kernel::LidarOdometryModule>().require(popt.lidar_odometry, where("lidar_odometry"));
+	checkOptionsOfAll<kernel::VisualOdometryModule>(config);
+	checkOptionsOfAll<kernel::ScaleCorrectionModule>(config, 0);
+	checkOptionsOfAll<kernel::LidarOdometryModule>(config);
 	Stages s;
 	if (!plan.motion_source.empty())
 	{
-		s.motion = registry<MotionSource>().create(plan.motion_source, where("motion_source"));
+		s.motion = kernel::registry<kernel::MotionSource>().create(plan.motion_source, where("motion_source"));
 		s.motion->configure(config, popt.motionSourceSetup());
 	}
 	if (plan.lidar_odometry)
 	{
-		s.lidar = registry<LidarOdometryModule>().create(popt.lidar_odometry, where("lidar_odometry"));
+		s.lidar = kernel::registry<kernel::LidarOdometryModule>().create(popt.lidar_odometry, where("lidar_odometry"));
 		s.lidar->configure(config);
 	}
 	config.checkAllKeysUsed();
@@ -107,7 +107,7 @@ Stages makeStages(const PipelineOptions& popt, const RunPlan& plan, RunConfig& c
 
 RunSummary runPipeline(const RunRequest& req)
 {
-	auto config = RunConfig::fromFile(req.ini, req.overrides);
+	auto config = kernel::RunConfig::fromFile(req.ini, req.overrides);
 	PipelineOptions popt;
 	config.load(popt, "pipeline");
 	PointTimeOptions times;

@@ -41,7 +41,7 @@ void RunOutputs::addSampleFrame(const Frame& f)
 	sample_frames.offer(std::move(copy));
 }
 
-void RunOutputs::setMotion(const MotionSource& source)
+void RunOutputs::setMotion(const kernel::MotionSource& source)
 {
 	motion = source.trajectory();
 	const double last_t = table.numbers("t").back();
@@ -72,7 +72,7 @@ RunSummary RunOutputs::write(const std::string& dir, const std::string& effectiv
 	return s;
 }
 
-void writeSnapshots(const std::string& dir, const RunOutputs& o, const MotionSource* motion, const std::string& gtPath)
+void writeSnapshots(const std::string& dir, const RunOutputs& o, const kernel::MotionSource* motion, const std::string& gtPath)
 {
 	viz::RunSnapshots run;
 	run.mode = o.plan.name;

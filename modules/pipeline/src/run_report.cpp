@@ -58,7 +58,7 @@ std::string accuracyText(const std::string& dir, const RunSummary& s, const RunR
 }
 }  // namespace
 
-void writeStageTimePlot(const std::string& png, const FrameTable& table)
+void writeStageTimePlot(const std::string& png, const kernel::FrameTable& table)
 {
 	std::vector<viz::StageTimeColumn> columns;
 	for (const auto& c : table.columns())
@@ -108,7 +108,7 @@ std::string runReportMarkdown(const RunSummary& s, const RunRequest& req, const 
 	return o.str();
 }
 
-void writeRunReport(const std::string& dir, const RunSummary& s, const RunRequest& req, const FrameTable& table, bool plots)
+void writeRunReport(const std::string& dir, const RunSummary& s, const RunRequest& req, const kernel::FrameTable& table, bool plots)
 {
 	const std::string accuracy = accuracyText(dir, s, req, plots);
 	if (plots)

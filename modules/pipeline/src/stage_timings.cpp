@@ -7,7 +7,7 @@
 
 namespace vlo::pipeline
 {
-std::vector<StageTiming> stageTimings(const FrameTable& table)
+std::vector<StageTiming> stageTimings(const kernel::FrameTable& table)
 {
 	std::vector<StageTiming> out;
 	for (const auto& column : table.columns())

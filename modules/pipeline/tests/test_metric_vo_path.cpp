@@ -24,22 +24,22 @@ Eigen::Isometry3d forward(double z)
 	return T;
 }
 
-VisualOdometryStep tracked(double mapZ, std::optional<double> motionZ, bool newMap = false)
+kernel::VisualOdometryStep tracked(double mapZ, std::optional<double> motionZ, bool newMap = false)
 {
-	VisualOdometryStep s;
+	kernel::VisualOdometryStep s;
 	s.camera_map_pose = forward(mapZ);
 	if (motionZ) s.camera_motion = forward(*motionZ);
 	s.new_map = newMap;
 	return s;
 }
 
-ScaleCorrection initial(double factor) { return {ScaleCorrection::Kind::Initial, factor, "first"}; }
+kernel::ScaleCorrection initial(double factor) { return {kernel::ScaleCorrection::Kind::Initial, factor, "first"}; }
 }  // namespace
 
 TEST(MetricVoPath, NothingUntilTheFirstScaleThenTheWholeMapInMetres)
 {
 	MetricVoPath path(vehicleTcamera());
-	EXPECT_FALSE(path.update(0.0, VisualOdometryStep{}, {}));  // initialising
+	EXPECT_FALSE(path.update(0.0, kernel::VisualOdometryStep{}, {}));  // initialising
 	EXPECT_FALSE(path.update(0.1, tracked(1.0, std::nullopt, true), {}));  // map made, scale unknown
 	EXPECT_TRUE(path.trajectory().empty());
 	// Next frame: the first estimate says VO units are 0.5 m.
@@ -59,7 +59,7 @@ TEST(MetricVoPath, ChainsMotionsAndAppliesACorrectionToItsOwnFrame)
 	path.update(0.0, tracked(1.0, std::nullopt, true), {});
 	path.update(0.1, tracked(2.0, 1.0), initial(1.0));  // metres already
 	path.update(0.2, tracked(3.0, 1.0), {});  // no correction: 1 m
-	const auto m = path.update(0.3, tracked(4.0, 1.0), {ScaleCorrection::Kind::Drift, 1.1, "drift"});  // VO 10 % short: 1.1 m
+	const auto m = path.update(0.3, tracked(4.0, 1.0), {kernel::ScaleCorrection::Kind::Drift, 1.1, "drift"});  // VO 10 % short: 1.1 m
 	ASSERT_TRUE(m);
 	EXPECT_NEAR(m->translation().x(), 1.1, 1e-12);
 	ASSERT_EQ(path.trajectory().size(), 4u);
@@ -71,7 +71,7 @@ TEST(MetricVoPath, LostLeavesAGapAndANewMapContinuesFromTheLastPose)
 	MetricVoPath path(vehicleTcamera());
 	path.update(0.0, tracked(1.0, std::nullopt, true), {});
 	path.update(0.1, tracked(2.0, 1.0), initial(1.0));  // at 2 m
-	EXPECT_FALSE(path.update(0.2, VisualOdometryStep{}, {}));  // LOST: no motion for LOAM
+	EXPECT_FALSE(path.update(0.2, kernel::VisualOdometryStep{}, {}));  // LOST: no motion for LOAM
 	EXPECT_FALSE(path.update(0.3, tracked(0.5, std::nullopt, true), {}));  // new map, unknown scale
 	EXPECT_EQ(path.trajectory().size(), 2u);
 	const auto m = path.update(0.4, tracked(1.0, 0.5), initial(2.0));  // VO units are 2 m

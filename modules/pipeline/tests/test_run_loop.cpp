@@ -24,6 +24,7 @@
 
 using namespace vlo;
 using namespace vlo::pipeline;
+using namespace vlo::kernel;
 
 namespace
 {
@@ -52,12 +53,12 @@ Eigen::Isometry3d forward(double metres)  ///< along the camera's z axis
 class FakeMonoVo : public MonocularVisualOdometry
 {
    public:
-	void configure(RunConfig&) override {}
-	VisualOdometryStep process(const Frame& frame, FrameTable& table) override
+	void configure(kernel::RunConfig&) override {}
+	kernel::VisualOdometryStep process(const Frame& frame, kernel::FrameTable& table) override
 	{
 		++seen.vo_frames;
 		table.set("vo_fake", static_cast<long long>(frame.index));
-		VisualOdometryStep step;
+		kernel::VisualOdometryStep step;
 		if (frame.index == 0) return step;
 		const double units = units_per_step_;
 		step.new_map = frame.index == 1;
@@ -76,93 +77,93 @@ class FakeMonoVo : public MonocularVisualOdometry
    private:
 	double units_per_step_ = 1.0;
 };
-VLO_REGISTER_MODULE(VisualOdometryModule, "fake_mono", FakeMonoVo);
+VLO_REGISTER_MODULE(kernel::VisualOdometryModule, "fake_mono", FakeMonoVo);
 
 /// A metric VO (stereo-like): the camera's motion in metres from frame 1 on, nothing to rescale.
 class FakeStereoVo : public VisualOdometryModule
 {
    public:
-	void configure(RunConfig&) override {}
-	VisualOdometryStep process(const Frame& frame, FrameTable&) override
+	void configure(kernel::RunConfig&) override {}
+	kernel::VisualOdometryStep process(const Frame& frame, kernel::FrameTable&) override
 	{
-		VisualOdometryStep step;
+		kernel::VisualOdometryStep step;
 		step.metric = true;
 		step.camera_pose = forward(kStep * double(frame.index));
 		if (frame.index >= 1) step.camera_motion = forward(kStep);
 		return step;
 	}
 };
-VLO_REGISTER_MODULE(VisualOdometryModule, "fake_stereo", FakeStereoVo);
+VLO_REGISTER_MODULE(kernel::VisualOdometryModule, "fake_stereo", FakeStereoVo);
 
 /// Metric scale 0.5 at the first estimate (frame 2), a 10 % drift correction at frame 4.
 class FakeScale : public ScaleCorrectionModule
 {
    public:
-	void configure(RunConfig&, int) override {}
-	ScaleCorrection process(const Frame* prev, const Frame& cur, const VisualOdometryStep& vo, FrameTable& table) override
+	void configure(kernel::RunConfig&, int) override {}
+	kernel::ScaleCorrection process(const Frame* prev, const Frame& cur, const kernel::VisualOdometryStep& vo, kernel::FrameTable& table) override
 	{
 		seen.scale_prev_index.push_back(prev ? long(prev->index) : -1);
 		table.set("scale_fake", vo.camera_motion.has_value());
-		if (cur.index == 2) return {ScaleCorrection::Kind::Initial, 0.5, "first"};
-		if (cur.index == 4) return {ScaleCorrection::Kind::Drift, 1.1, "drift"};
+		if (cur.index == 2) return {kernel::ScaleCorrection::Kind::Initial, 0.5, "first"};
+		if (cur.index == 4) return {kernel::ScaleCorrection::Kind::Drift, 1.1, "drift"};
 		return {};
 	}
 	std::vector<std::pair<std::string, double>> figures() const override { return {{"fake_figure", 42}}; }
 };
-VLO_REGISTER_MODULE(ScaleCorrectionModule, "fake_scale", FakeScale);
+VLO_REGISTER_MODULE(kernel::ScaleCorrectionModule, "fake_scale", FakeScale);
 
 /// Follows the truth; records the guesses it is given.
 class FakeLidar : public LidarOdometryModule
 {
    public:
-	void configure(RunConfig&) override {}
-	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> /*prepared*/,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	void configure(kernel::RunConfig&) override {}
+	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> /*prepared*/,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
 	{
 		seen.lidar_guesses.push_back(vehicle_motion);
 		table.set("lo_fake", static_cast<long long>(frame.scan.size()));
 		return Eigen::Isometry3d(Eigen::Translation3d(kStep * double(frame.index), 0, 0));
 	}
 };
-VLO_REGISTER_MODULE(LidarOdometryModule, "fake_lidar", FakeLidar);
+VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "fake_lidar", FakeLidar);
 
 /// Fails at frame 3 (with two threads, while the motion source works on frame 4).
 class FailingLidar : public FakeLidar
 {
    public:
-	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
 	{
 		if (frame.index == 3) failInput("lidar", "fails at frame 3");
 		return FakeLidar::process(frame, std::move(prepared), vehicle_motion, table);
 	}
 };
-VLO_REGISTER_MODULE(LidarOdometryModule, "failing_lidar", FailingLidar);
+VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "failing_lidar", FailingLidar);
 
 /// Ctrl-C while it works on frame 3.
 class InterruptedLidar : public FakeLidar
 {
    public:
-	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) override
+	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
+		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
 	{
 		if (frame.index == 3) std::raise(SIGINT);
 		return FakeLidar::process(frame, std::move(prepared), vehicle_motion, table);
 	}
 };
-VLO_REGISTER_MODULE(LidarOdometryModule, "interrupted_lidar", InterruptedLidar);
+VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "interrupted_lidar", InterruptedLidar);
 
 /// Fails at frame 4.
 class FailingMonoVo : public FakeMonoVo
 {
    public:
-	VisualOdometryStep process(const Frame& frame, FrameTable& table) override
+	kernel::VisualOdometryStep process(const Frame& frame, kernel::FrameTable& table) override
 	{
 		if (frame.index == 4) failInput("vo", "fails at frame 4");
 		return FakeMonoVo::process(frame, table);
 	}
 };
-VLO_REGISTER_MODULE(VisualOdometryModule, "failing_mono", FailingMonoVo);
+VLO_REGISTER_MODULE(kernel::VisualOdometryModule, "failing_mono", FailingMonoVo);
 
 
 class RunLoop : public ::testing::Test

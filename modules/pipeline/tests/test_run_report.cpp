@@ -35,9 +35,9 @@ std::string readAll(const std::string& path)
 }
 
 /// 40 frames, 0.9 m apart along x at 10 Hz; ms_a grows from 10 to 49 ms, ms_b 20 ms, ms_total 5 ms more.
-FrameTable table()
+kernel::FrameTable table()
 {
-	FrameTable t;
+	kernel::FrameTable t;
 	for (int i = 0; i < 40; ++i)
 	{
 		t.newRow();

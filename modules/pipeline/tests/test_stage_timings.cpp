@@ -9,7 +9,7 @@ using namespace vlo::pipeline;
 
 TEST(StageTimings, MeanP95MaxAndCountOfEachTimingColumn)
 {
-	FrameTable t;
+	kernel::FrameTable t;
 	for (int i = 1; i <= 20; ++i)
 	{
 		t.newRow();
@@ -39,7 +39,7 @@ TEST(StageTimings, MeanP95MaxAndCountOfEachTimingColumn)
 
 TEST(StageTimings, NoTimingColumnsNoRows)
 {
-	FrameTable t;
+	kernel::FrameTable t;
 	t.set("frame", 0LL);
 	EXPECT_TRUE(stageTimings(t).empty());
 }

@@ -26,10 +26,10 @@ struct ScaleSnapshot
 	scale::ScaleEstimate estimate;
 };
 
-class LidarDepthScaleModule : public ScaleCorrectionModule
+class LidarDepthScaleModule : public kernel::ScaleCorrectionModule
 {
    public:
-	void configure(RunConfig& config, int snapshot_every) override
+	void configure(kernel::RunConfig& config, int snapshot_every) override
 	{
 		snapshot_every_ = snapshot_every;
 		config.load(opt_, "scale");
@@ -37,14 +37,14 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		policy_ = std::make_unique<scale::ScaleCorrectionPolicy>(opt_);
 	}
 
-	ScaleCorrection process(const Frame* prev, const Frame& cur, const VisualOdometryStep& vo, FrameTable& table) override
+	kernel::ScaleCorrection process(const Frame* prev, const Frame& cur, const kernel::VisualOdometryStep& vo, kernel::FrameTable& table) override
 	{
 		if (vo.new_map)  // a fresh map has an arbitrary scale again
 		{
 			policy_->reset();
 			cumulative_ = -1;
 		}
-		ScaleCorrection correction;
+		kernel::ScaleCorrection correction;
 		if (!vo.camera_motion || !prev || !prev->has_scan || !prev->has_image)
 		{
 			correction.why = vo.camera_motion ? "no previous scan" : "no VO motion";
@@ -64,7 +64,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		{
 			// With a camera motion the VO tracked this frame in its map: the caller applies the factor.
 			const bool initial = d.kind == scale::ScaleDecision::Kind::Initial;
-			correction.kind = initial ? ScaleCorrection::Kind::Initial : ScaleCorrection::Kind::Drift;
+			correction.kind = initial ? kernel::ScaleCorrection::Kind::Initial : kernel::ScaleCorrection::Kind::Drift;
 			correction.factor = d.factor;
 			corrections_ += initial ? 0 : 1;
 			cumulative_ = initial ? 1.0 : cumulative_ * d.factor;
@@ -73,7 +73,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 			correction.why += std::string(": ") + d.why;
 		writeColumns(e, correction, table);
 		// Estimates once the map is metric (the initial one says how long a map unit was: off the plot).
-		const bool initial = correction.kind == ScaleCorrection::Kind::Initial;
+		const bool initial = correction.kind == kernel::ScaleCorrection::Kind::Initial;
 		history_.add(cur.index, e.valid && !initial ? e.scale : std::nan(""), e.counts.inliers,
 			initial ? 1.0 : correction.factor, cumulative_, !e.valid && e.scale > 0 ? e.scale : std::nan(""));
 		if (snapshot_every_ > 0 && cur.index % snapshot_every_ == 0)
@@ -130,7 +130,7 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 		return corrector_->estimate(prev, cur, camera_motion.inverse(), &pyramid_, &at_image);
 	}
 
-	void writeColumns(const scale::ScaleEstimate& e, const ScaleCorrection& correction, FrameTable& table) const
+	void writeColumns(const scale::ScaleEstimate& e, const kernel::ScaleCorrection& correction, kernel::FrameTable& table) const
 	{
 		table.set("scale_reason", std::string(scale::toString(e.reason)));
 		table.set("scale_s", e.scale, 4);
@@ -157,6 +157,6 @@ class LidarDepthScaleModule : public ScaleCorrectionModule
 	double cumulative_ = -1;  ///< product of the corrections of the current metric map (< 0: not metric yet)
 	int estimates_ = 0, valid_ = 0, corrections_ = 0;
 };
-VLO_REGISTER_MODULE(ScaleCorrectionModule, "lidar_depth", LidarDepthScaleModule);
+VLO_REGISTER_MODULE(kernel::ScaleCorrectionModule, "lidar_depth", LidarDepthScaleModule);
 }  // namespace
 }  // namespace vlo

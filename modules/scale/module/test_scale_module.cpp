@@ -14,9 +14,9 @@ namespace
 struct Fixture
 {
 	Frame prev, cur;
-	VisualOdometryStep vo;  ///< the camera motion of a VO whose map unit is 0.5 m
-	std::unique_ptr<ScaleCorrectionModule> module;
-	FrameTable table;
+	kernel::VisualOdometryStep vo;  ///< the camera motion of a VO whose map unit is 0.5 m
+	std::unique_ptr<kernel::ScaleCorrectionModule> module;
+	kernel::FrameTable table;
 
 	Fixture()
 	{
@@ -29,13 +29,13 @@ struct Fixture
 		prev.rig = cur.rig = p.rig;
 		vo.camera_motion = withScaledTranslation(p.cur_T_prev, 0.5).inverse();
 		vo.new_map = true;
-		auto config = RunConfig::fromString("[scale]\nkeypoint_test = fast9\n", "test.ini");
-		module = registry<ScaleCorrectionModule>().create("lidar_depth", "test");
+		auto config = kernel::RunConfig::fromString("[scale]\nkeypoint_test = fast9\n", "test.ini");
+		module = kernel::registry<kernel::ScaleCorrectionModule>().create("lidar_depth", "test");
 		module->configure(config, 0);
 		config.checkAllKeysUsed();
 	}
 
-	ScaleCorrection step(const Frame* previous)
+	kernel::ScaleCorrection step(const Frame* previous)
 	{
 		table.newRow();
 		return module->process(previous, cur, vo, table);
@@ -47,8 +47,8 @@ struct Fixture
 TEST(ScaleModule, TheFirstEstimateDecidesToScaleTheWholeMap)
 {
 	Fixture f;
-	const ScaleCorrection a = f.step(&f.prev);
-	EXPECT_EQ(a.kind, ScaleCorrection::Kind::Initial);
+	const kernel::ScaleCorrection a = f.step(&f.prev);
+	EXPECT_EQ(a.kind, kernel::ScaleCorrection::Kind::Initial);
 	EXPECT_NEAR(a.factor, 2.0, 0.02);
 	EXPECT_EQ(a.why, "initial");
 	EXPECT_EQ(f.last("scale_decision"), "initial");
@@ -60,13 +60,13 @@ TEST(ScaleModule, TheFirstEstimateDecidesToScaleTheWholeMap)
 TEST(ScaleModule, ANewMapIsScaledWholeAgain)
 {
 	Fixture f;
-	ASSERT_EQ(f.step(&f.prev).kind, ScaleCorrection::Kind::Initial);
+	ASSERT_EQ(f.step(&f.prev).kind, kernel::ScaleCorrection::Kind::Initial);
 	f.vo.new_map = false;
-	const ScaleCorrection same = f.step(&f.prev);  // the map is metric: 2 now means a drift
-	EXPECT_NE(same.kind, ScaleCorrection::Kind::Initial);
+	const kernel::ScaleCorrection same = f.step(&f.prev);  // the map is metric: 2 now means a drift
+	EXPECT_NE(same.kind, kernel::ScaleCorrection::Kind::Initial);
 	f.vo.new_map = true;
-	const ScaleCorrection again = f.step(&f.prev);
-	EXPECT_EQ(again.kind, ScaleCorrection::Kind::Initial);  // a fresh map, initial again
+	const kernel::ScaleCorrection again = f.step(&f.prev);
+	EXPECT_EQ(again.kind, kernel::ScaleCorrection::Kind::Initial);  // a fresh map, initial again
 	EXPECT_NEAR(again.factor, 2.0, 0.02);
 }
 
@@ -76,7 +76,7 @@ TEST(ScaleModule, NothingWithoutAPreviousFrameOrAMotion)
 	EXPECT_FALSE(f.step(nullptr).apply());
 	EXPECT_EQ(f.last("scale_decision"), "no previous scan");
 	f.vo.camera_motion.reset();
-	const ScaleCorrection none = f.step(&f.prev);
+	const kernel::ScaleCorrection none = f.step(&f.prev);
 	EXPECT_FALSE(none.apply());
 	EXPECT_EQ(none.why, "no VO motion");
 	EXPECT_EQ(f.last("scale_decision"), "no VO motion");

@@ -7,15 +7,15 @@ namespace vlo
 {
 namespace
 {
-class OrbVoModule : public MonocularVisualOdometry
+class OrbVoModule : public kernel::MonocularVisualOdometry
 {
    public:
-	void configure(RunConfig& config) override
+	void configure(kernel::RunConfig& config) override
 	{
 		for (const auto& [section, options] : opt_.parts()) config.load(*options, section);
 	}
 
-	VisualOdometryStep process(const Frame& frame, FrameTable& table) override
+	kernel::VisualOdometryStep process(const Frame& frame, kernel::FrameTable& table) override
 	{
 		const std::string where = "frame " + std::to_string(frame.index);
 		if (!frame.has_image) failInput(where, "the visual odometry needs an image in every frame");
@@ -39,7 +39,7 @@ class OrbVoModule : public MonocularVisualOdometry
 		table.set("vo_metric", info.metric);
 		table.setTimes("vo_", info.ms);
 
-		VisualOdometryStep step;
+		kernel::VisualOdometryStep step;
 		step.camera_pose = info.pose;
 		step.camera_motion = info.motion;
 		step.camera_map_pose = info.map_pose;
@@ -61,6 +61,6 @@ class OrbVoModule : public MonocularVisualOdometry
 	std::unique_ptr<vo::VisualOdometry> vo_;
 	int threads_ = 1;
 };
-VLO_REGISTER_MODULE(VisualOdometryModule, "orb", OrbVoModule);
+VLO_REGISTER_MODULE(kernel::VisualOdometryModule, "orb", OrbVoModule);
 }  // namespace
 }  // namespace vlo

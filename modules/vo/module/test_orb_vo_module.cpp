@@ -20,21 +20,21 @@ Eigen::Isometry3d vehicleTcamera()
 
 struct Drive
 {
-	std::unique_ptr<MonocularVisualOdometry> vo;
+	std::unique_ptr<kernel::MonocularVisualOdometry> vo;
 	PinholeCamera cam = vo::test::kittiCamera();
 	vo::test::StreetRenderer renderer{vo::test::StreetScene(), cam};
-	FrameTable table;
+	kernel::FrameTable table;
 	int k = 0;
 
 	Drive()
 	{
-		auto config = RunConfig::fromString("[vo.orb]\nn_features = 1500\n", "test.ini");
-		vo.reset(dynamic_cast<MonocularVisualOdometry*>(registry<VisualOdometryModule>().create("orb", "test").release()));
+		auto config = kernel::RunConfig::fromString("[vo.orb]\nn_features = 1500\n", "test.ini");
+		vo.reset(dynamic_cast<kernel::MonocularVisualOdometry*>(kernel::registry<kernel::VisualOdometryModule>().create("orb", "test").release()));
 		vo->configure(config);
 		config.checkAllKeysUsed();
 	}
 
-	VisualOdometryStep next()
+	kernel::VisualOdometryStep next()
 	{
 		Frame f;
 		f.index = std::size_t(k);
@@ -57,7 +57,7 @@ TEST(OrbVoModule, ReportsTheCameraAndIsMetricOnceScaled)
 	Drive d;
 	ASSERT_NE(d.vo, nullptr);  // "orb" is a monocular VO
 	EXPECT_FALSE(d.vo->rescale(2.0, true));  // no map yet
-	VisualOdometryStep step;
+	kernel::VisualOdometryStep step;
 	for (int i = 0; i < 10 && !step.new_map; ++i) step = d.next();
 	ASSERT_TRUE(step.new_map);
 	EXPECT_FALSE(step.metric);
@@ -78,7 +78,7 @@ TEST(CameraMount, VehicleMotionIsTheCameraMotionInVehicleAxesWithTheLeverArmOnce
 {
 	Frame f;
 	f.rig.vehicle_T_camera = vehicleTcamera();
-	CameraMount mount;
+	kernel::CameraMount mount;
 	mount.observe(f);
 	f.rig.vehicle_T_camera = Eigen::Isometry3d::Identity();
 	mount.observe(f);  // the first frame's placement stays

@@ -11,7 +11,7 @@
 #include <variant>
 #include <vector>
 
-namespace vlo
+namespace vlo::kernel
 {
 class FrameTable
 {
@@ -57,4 +57,4 @@ class FrameTable
 	std::vector<std::string> columns_;
 	std::vector<std::map<std::string, Cell>> rows_;
 };
-}  // namespace vlo
+}  // namespace vlo::kernel

@@ -12,7 +12,7 @@
 #include <memory>
 #include <optional>
 
-namespace vlo
+namespace vlo::kernel
 {
 /// Where a LiDAR odometry that works in its sensor's frame meets the interface's vehicle frame: the
 /// LiDAR's placement, taken from the first frame, moves guesses in and poses out.
@@ -58,4 +58,4 @@ class LidarOdometryModule
 	virtual Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
 		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) = 0;
 };
-}  // namespace vlo
+}  // namespace vlo::kernel

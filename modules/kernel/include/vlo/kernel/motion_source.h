@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace vlo
+namespace vlo::kernel
 {
 /// The modules a motion source composes, by registry name, from [pipeline].
 struct MotionSourceSetup
@@ -44,4 +44,4 @@ class MotionSource
 	/// Counts for summary.json.
 	virtual std::vector<std::pair<std::string, double>> figures() const { return {}; }
 };
-}  // namespace vlo
+}  // namespace vlo::kernel

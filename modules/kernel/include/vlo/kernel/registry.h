@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-namespace vlo
+namespace vlo::kernel
 {
 template <class Base>
 class Registry
@@ -70,9 +70,9 @@ Registry<Family>& registry()
 	static Registry<Family> r;
 	return r;
 }
-}  // namespace vlo
+}  // namespace vlo::kernel
 
 /// Registers `Class` (default-constructible, derived from `Family`) under `name`, e.g.
 /// VLO_REGISTER_MODULE(LidarOdometryModule, "aloam", AloamModule). Use once per class, at namespace scope.
 #define VLO_REGISTER_MODULE(Family, name, Class)                                                                     \
-	[[maybe_unused]] static const bool vlo_registered_##Class = ::vlo::registry<Family>().add(name, [] { return std::make_unique<Class>(); })
+	[[maybe_unused]] static const bool vlo_registered_##Class = ::vlo::kernel::registry<Family>().add(name, [] { return std::make_unique<Class>(); })

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-namespace vlo
+namespace vlo::kernel
 {
 class RunConfig
 {
@@ -51,4 +51,4 @@ class RunConfig
 	std::map<std::pair<std::string, std::string>, std::string> overrides_;
 	std::map<std::string, std::vector<OptionRow>> declared_;  ///< (section, key) -> the --set text
 };
-}  // namespace vlo
+}  // namespace vlo::kernel

@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-namespace vlo
+namespace vlo::kernel
 {
 /// A scale corrector's decision at one frame: what to do to the VO's map, or nothing, and why.
 struct ScaleCorrection
@@ -46,4 +46,4 @@ class ScaleCorrectionModule
 	/// Counts for summary.json.
 	virtual std::vector<std::pair<std::string, double>> figures() const { return {}; }
 };
-}  // namespace vlo
+}  // namespace vlo::kernel

@@ -5,7 +5,7 @@
 
 #include <Eigen/Geometry>
 
-namespace vlo
+namespace vlo::kernel
 {
 class SensorMount
 {
@@ -26,4 +26,4 @@ class SensorMount
 	Eigen::Isometry3d vehicle_T_sensor_ = Eigen::Isometry3d::Identity();
 	bool known_ = false;
 };
-}  // namespace vlo
+}  // namespace vlo::kernel

@@ -12,7 +12,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 
-namespace vlo
+namespace vlo::kernel
 {
 /// What a visual odometry tells of one frame, in the camera's optical frame and the VO's units.
 struct VisualOdometryStep
@@ -66,4 +66,4 @@ class MonocularVisualOdometry : public VisualOdometryModule
 	/// drift correction). False when there is nothing to scale (no map).
 	virtual bool rescale(double factor, bool whole_map) = 0;
 };
-}  // namespace vlo
+}  // namespace vlo::kernel

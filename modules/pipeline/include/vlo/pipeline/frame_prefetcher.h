@@ -23,7 +23,7 @@ namespace vlo::pipeline
 struct ReadFrame
 {
 	Frame frame;
-	std::unique_ptr<PreparedScan> prepared;  ///< nullptr: nothing prepared
+	std::unique_ptr<kernel::PreparedScan> prepared;  ///< nullptr: nothing prepared
 	double prepared_ms = 0;  ///< spent in the preparation
 };
 
@@ -31,7 +31,7 @@ class FramePrefetcher
 {
    public:
 	/// Work on a frame read (it may change the frame), and its result.
-	using Prepare = std::function<std::unique_ptr<PreparedScan>(Frame&)>;
+	using Prepare = std::function<std::unique_ptr<kernel::PreparedScan>(Frame&)>;
 
 	/// `ahead` = frames read in advance (0: no thread, next() reads on the caller's thread);
 	/// `limit` = frames to read at most (0 = all); `prepare`, if given, runs on each frame read,

@@ -49,7 +49,7 @@ struct PipelineOptions : public OptionSet
 
 	RunPlan plan() const;
 	/// The module names a motion source composes.
-	MotionSourceSetup motionSourceSetup() const
+	kernel::MotionSourceSetup motionSourceSetup() const
 	{
 		return {visual_odometry, scale_correction, scale_snapshot_every, threadCount()};
 	}

@@ -18,7 +18,7 @@ namespace vlo::pipeline
 struct RunOutputs
 {
 	RunPlan plan;
-	FrameTable table;
+	kernel::FrameTable table;
 	Trajectory lidar;  ///< the LiDAR odometry's (trajectory_lo.tum or trajectory_vlo.tum), vehicle frame
 	Trajectory motion;  ///< the motion source's (trajectory_vo.tum), vehicle frame; see setMotion
 	std::string motion_label;  ///< its name in plots
@@ -32,7 +32,7 @@ struct RunOutputs
 	void addSampleFrame(const Frame& f);
 	/// After the frame loop: the motion source's trajectory up to the table's last row (with two threads a
 	/// run stopped early may have it a few frames further), its label and figures.
-	void setMotion(const MotionSource& source);
+	void setMotion(const kernel::MotionSource& source);
 	/// Writes trajectories (trajectory_<name>.tum, and .kitti.txt with cam0_T_vehicle), frames.csv, map.pcd
 	/// and run.ini; returns the summary figures.
 	RunSummary write(const std::string& dir, const std::string& effectiveIni) const;
@@ -40,7 +40,7 @@ struct RunOutputs
 
 /// snapshots/ of DIR (viz's run snapshots, then the motion source's own when there is one): a convenience, so
 /// a failure to render is logged, not fatal; a bad --gt file still throws InputError.
-void writeSnapshots(const std::string& dir, const RunOutputs& o, const MotionSource* motion, const std::string& gtPath);
+void writeSnapshots(const std::string& dir, const RunOutputs& o, const kernel::MotionSource* motion, const std::string& gtPath);
 
 /// summary.json: mode, frames, timing, path length, largest step, reader statistics, inputs, the per-stage timings.
 void writeSummaryJson(const std::string& path, const RunSummary& s, const RunRequest& req);

@@ -11,7 +11,7 @@ namespace vlo::pipeline
 {
 /// snapshots/time_per_stage.png from the table's ms_* columns (vlo/viz/stage_time_plot.h); nothing when the
 /// table has no stage time.
-void writeStageTimePlot(const std::string& png, const FrameTable& table);
+void writeStageTimePlot(const std::string& png, const kernel::FrameTable& table);
 
 /// The Markdown of the report; `files` are the folder's files (relative paths) that it may link to.
 std::string runReportMarkdown(const RunSummary& s, const RunRequest& req, const std::vector<std::string>& files,
@@ -20,5 +20,5 @@ std::string runReportMarkdown(const RunSummary& s, const RunRequest& req, const 
 /// Evaluates the final trajectory against req.gt (when given; accuracy plots into snapshots/ when
 /// `plots`), draws the stage-time plot (when `plots`) and writes DIR/report.md atomically, linking
 /// only files that exist in DIR.
-void writeRunReport(const std::string& dir, const RunSummary& s, const RunRequest& req, const FrameTable& table, bool plots);
+void writeRunReport(const std::string& dir, const RunSummary& s, const RunRequest& req, const kernel::FrameTable& table, bool plots);
 }  // namespace vlo::pipeline

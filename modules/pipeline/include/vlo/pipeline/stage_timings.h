@@ -17,7 +17,7 @@ struct StageTiming
 };
 
 /// One entry per ms_* column, in frames.csv's order (ms_total last); empty cells are not counted.
-std::vector<StageTiming> stageTimings(const FrameTable& table);
+std::vector<StageTiming> stageTimings(const kernel::FrameTable& table);
 
 /// A fixed-width table, one stage a line, with a header.
 std::string formatStageTimings(const std::vector<StageTiming>& timings);

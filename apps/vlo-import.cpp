@@ -118,12 +118,12 @@ int rosbag(int argc, char** argv)
 		"Messages are written in header-stamp order with their own stamps; see doc/ROSBAG.md.");
 	if (cl.has("list"))
 	{
-		vlo::listRosbagTopics(cl.getAll("bag"), std::cout);
+		vlo::rosbag_io::listRosbagTopics(cl.getAll("bag"), std::cout);
 		return 0;
 	}
 	for (const char* required : {"lidar-topic", "image-topic", "out"})
 		if (!cl.has(required)) vlo::failInput("command line", std::string("missing required option '--") + required + "'");
-	vlo::RosbagImport opt;
+	vlo::rosbag_io::RosbagImport opt;
 	opt.bags = cl.getAll("bag");
 	opt.lidar_topic = cl.get("lidar-topic");
 	opt.image_topic = cl.get("image-topic");
@@ -135,7 +135,7 @@ int rosbag(int argc, char** argv)
 	opt.reorder_window = cl.getDouble("reorder-window", opt.reorder_window);
 	opt.out = cl.get("out");
 	readCommon(cl, opt);
-	const auto s = vlo::importRosbag(opt);
+	const auto s = vlo::rosbag_io::importRosbag(opt);
 	for (const auto& w : s.warnings) vlo::logger().logStr(mrpt::system::LVL_WARN, w);
 	const double mb = s.bag_bytes / 1e6;
 	std::printf("vlo-import: %s: %zu images, %zu scans (%zu non-finite points dropped), extrinsics from %s; %.1f MB of bags in %.1f s (%.1f MB/s)\n",

@@ -24,16 +24,16 @@ namespace
 void importBag(const std::string& path)
 {
 	std::ostringstream topics;
-	listRosbagTopics({path}, topics);
+	rosbag_io::listRosbagTopics({path}, topics);
 	const test::BagLayout layout;
-	RosbagImport opt;
+	rosbag_io::RosbagImport opt;
 	opt.bags = {path};
 	opt.lidar_topic = layout.lidar_topic;
 	opt.image_topic = layout.image_topic;
 	opt.gt_topic = layout.gt_topic;
 	opt.vehicle_frame = layout.vehicle_frame;
 	opt.out = (fs::path(path).parent_path() / "imported.rawlog").string();
-	const RosbagImportSummary summary = importRosbag(opt);
+	const rosbag_io::RosbagImportSummary summary = importRosbag(opt);
 	readRawlogChecked(summary.rawlog);
 	if (!summary.ground_truth.empty()) readTumChecked(summary.ground_truth);
 }

@@ -2,7 +2,7 @@
 #include <vlo/icp/icp_odometry.h>
 #include <vlo/kernel/lidar_odometry.h>
 
-namespace vlo
+namespace vlo::icp
 {
 namespace
 {
@@ -44,4 +44,4 @@ class IcpModule : public kernel::LidarOdometryModule
 };
 VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "icp", IcpModule);
 }  // namespace
-}  // namespace vlo
+}  // namespace vlo::icp

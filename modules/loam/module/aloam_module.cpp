@@ -4,7 +4,7 @@
 #include <vlo/loam/ring_count.h>
 #include <vlo/loam/rings.h>
 
-namespace vlo
+namespace vlo::loam
 {
 namespace
 {
@@ -80,4 +80,4 @@ class AloamModule : public kernel::LidarOdometryModule
 };
 VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "aloam", AloamModule);
 }  // namespace
-}  // namespace vlo
+}  // namespace vlo::loam

@@ -25,7 +25,7 @@
 #include <cstdio>
 #include <ostream>
 
-namespace vlo
+namespace vlo::rosbag_io
 {
 using namespace rosbag_io;
 
@@ -354,4 +354,4 @@ void listRosbagTopics(const std::vector<std::string>& paths, std::ostream& out)
 		out << line;
 	}
 }
-}  // namespace vlo
+}  // namespace vlo::rosbag_io

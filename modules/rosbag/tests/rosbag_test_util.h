@@ -49,9 +49,9 @@ inline const std::vector<Frame>& simFrames(Trajectory* gt = nullptr)
 	return frames;
 }
 
-inline RosbagImport importOptions(const std::string& bag, const std::string& out, const BagLayout& l = {})
+inline rosbag_io::RosbagImport importOptions(const std::string& bag, const std::string& out, const BagLayout& l = {})
 {
-	RosbagImport opt;
+	rosbag_io::RosbagImport opt;
 	opt.bags = {bag};
 	opt.lidar_topic = l.lidar_topic;
 	opt.image_topic = l.image_topic;

@@ -14,9 +14,9 @@ namespace vlo::test
 namespace
 {
 /// Imports and expects the error, then that neither the rawlog nor its partial files exist.
-void expectRefused(const RosbagImport& opt, const std::vector<std::string>& parts)
+void expectRefused(const rosbag_io::RosbagImport& opt, const std::vector<std::string>& parts)
 {
-	expectInputError([&] { importRosbag(opt); }, parts);
+	expectInputError([&] { rosbag_io::importRosbag(opt); }, parts);
 	const fs::path dir = fs::path(opt.out).parent_path();
 	for (const auto& e : fs::directory_iterator(dir))
 		EXPECT_TRUE(e.path().extension() == ".bag" || e.path().extension() == ".yaml") << "left behind: " << e.path();
@@ -58,14 +58,14 @@ TEST(RosbagErrors, CtrlCStopsTheImportOfAShortBag)
 {
 	const std::string dir = freshDir();
 	writeBag(dir + "/in.bag", fewFrames(), {}, {});  // 6 messages
-	const RosbagImport opt = importOptions(dir + "/in.bag", dir + "/out.rawlog");
+	const rosbag_io::RosbagImport opt = importOptions(dir + "/in.bag", dir + "/out.rawlog");
 	EXPECT_EXIT(
 		{
 			installInterruptHandler();
 			std::raise(SIGINT);
 			try
 			{
-				importRosbag(opt);
+				rosbag_io::importRosbag(opt);
 			}
 			catch (const Interrupted&)
 			{
@@ -104,7 +104,7 @@ TEST(RosbagErrors, CorruptSizesAreRefusedBeforeRosbagReadsThem)
 	expectRefused(importOptions(hugeHeader, dir + "/out.rawlog"), {hugeHeader, "at byte 13", "a header of 2147483647 bytes"});
 	const std::string pastEnd = patched(dir, 13, 4096);  // fits the limit, runs past the bag header's padding
 	std::ostringstream listing;
-	expectInputError([&] { listRosbagTopics({pastEnd}, listing); }, {pastEnd, "not a readable ROS 1 bag", "past its end"});
+	expectInputError([&] { rosbag_io::listRosbagTopics({pastEnd}, listing); }, {pastEnd, "not a readable ROS 1 bag", "past its end"});
 }
 
 TEST(RosbagErrors, MissingTopicListsTheTopicsThere)

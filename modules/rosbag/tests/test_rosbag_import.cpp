@@ -111,7 +111,7 @@ TEST_P(RosbagRoundTrip, ImportedRawlogHoldsWhatTheBagHeld)
 		opt.extrinsics = dir + "/extrinsics.yaml";
 		writeExtrinsicsFile(opt.extrinsics, l_T_c);
 	}
-	const auto summary = importRosbag(opt);
+	const auto summary = rosbag_io::importRosbag(opt);
 	EXPECT_EQ(summary.images, src.size());
 	EXPECT_EQ(summary.scans, src.size());
 	EXPECT_EQ(summary.late_messages, 0u);
@@ -148,7 +148,7 @@ TEST(RosbagImport, GroundTruthInTheVehicleFrameRelativeToTheFirstPose)
 		auto opt = importOptions(dir + "/gt.bag", dir + "/out.rawlog", layout);
 		opt.gt_topic = layout.gt_topic;
 		opt.vehicle_frame = "base_link";
-		const auto summary = importRosbag(opt);
+		const auto summary = rosbag_io::importRosbag(opt);
 		ASSERT_EQ(summary.ground_truth, io::groundTruthPathFor(opt.out));
 		const Trajectory got = io::readTum(summary.ground_truth);
 		ASSERT_EQ(got.size(), gt.size());
@@ -182,7 +182,7 @@ TEST(RosbagImport, SeveralBagsAreOneRecording)
 	writeBag(dir + "/b.bag", {frames.begin() + half, frames.end()}, {}, second);
 	auto opt = importOptions(dir + "/b.bag", dir + "/out.rawlog");
 	opt.bags = {dir + "/b.bag", dir + "/a.bag"};  // any order: messages go by stamp
-	const auto s = importRosbag(opt);
+	const auto s = rosbag_io::importRosbag(opt);
 	EXPECT_EQ(s.images, frames.size());
 	EXPECT_EQ(s.scans, frames.size());
 	expectSameFrames(frames, readFrames(opt.out), true);
@@ -215,7 +215,7 @@ TEST(RosbagImport, S3eLayoutWithCalibrationFiles)
 										<< c.cx << ", 0, " << c.fy << ", " << c.cy << ", 0, 0, 1]}\ndistortion_model: plumb_bob\n"
 										<< "distortion_coefficients: {rows: 1, cols: 5, data: [" << c.dist[0] << ", " << c.dist[1]
 										<< ", " << c.dist[2] << ", " << c.dist[3] << ", 0.0]}\n";
-	importRosbag(opt);
+	rosbag_io::importRosbag(opt);
 	expectSameFrames(frames, readFrames(opt.out), true);
 }
 }  // namespace

@@ -15,7 +15,7 @@
 #include <cstdio>
 #include <memory>
 
-namespace vlo
+namespace vlo::scale
 {
 namespace
 {
@@ -159,4 +159,4 @@ class LidarDepthScaleModule : public kernel::ScaleCorrectionModule
 };
 VLO_REGISTER_MODULE(kernel::ScaleCorrectionModule, "lidar_depth", LidarDepthScaleModule);
 }  // namespace
-}  // namespace vlo
+}  // namespace vlo::scale

@@ -3,7 +3,7 @@
 #include <vlo/kernel/visual_odometry.h>
 #include <vlo/vo/visual_odometry.h>
 
-namespace vlo
+namespace vlo::vo
 {
 namespace
 {
@@ -63,4 +63,4 @@ class OrbVoModule : public kernel::MonocularVisualOdometry
 };
 VLO_REGISTER_MODULE(kernel::VisualOdometryModule, "orb", OrbVoModule);
 }  // namespace
-}  // namespace vlo
+}  // namespace vlo::vo

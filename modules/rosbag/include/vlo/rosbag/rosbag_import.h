@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace vlo
+namespace vlo::rosbag_io
 {
 struct RosbagImport
 {
@@ -38,4 +38,4 @@ RosbagImportSummary importRosbag(const RosbagImport& opt);
 
 /// Prints the topics of the bags as a table: topic, type, messages, rate (Hz).
 void listRosbagTopics(const std::vector<std::string>& bags, std::ostream& out);
-}  // namespace vlo
+}  // namespace vlo::rosbag_io

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 #include <vlo/scale/scale_plot.h>
 
-#include "../../viz/tests/test_util.h"
+#include "../../../viz/tests/test_util.h"
 
 #include <cmath>
 

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <vlo/kernel/scale_correction.h>
 
-#include "../tests/synthetic_scene.h"
+#include "../synthetic_scene.h"
 
 using namespace vlo;
 using namespace vlo::scale::test;

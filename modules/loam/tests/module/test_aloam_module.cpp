@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 #include <vlo/kernel/lidar_odometry.h>
 
-#include "../tests/synthetic_world.h"
-#include "../tests/test_helpers.h"
+#include "../synthetic_world.h"
+#include "../test_helpers.h"
 
 namespace vlo::loam::test
 {

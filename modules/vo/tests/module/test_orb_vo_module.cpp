@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <vlo/kernel/visual_odometry.h>
 
-#include "../tests/vo_test_util.h"
+#include "../vo_test_util.h"
 
 using namespace vlo;
 

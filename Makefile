@@ -5,7 +5,7 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc)
 
-.PHONY: all deps build run test test-sanitize test-sanitize-ci clean
+.PHONY: all deps build run test test-sanitize test-sanitize-ci check-format clean
 all: build
 
 deps:
@@ -50,6 +50,10 @@ test-sanitize: deps
 # does not fit CI's time on 2 cores (doc/ROBUSTNESS.md).
 test-sanitize-ci:
 	$(MAKE) test-sanitize SAN_TARGETS='test_core test_io test_kernel' SAN_EXCLUDE='_NOT_BUILT|^e2e_'
+
+# The code keeps .clang-format (Debian's clang-format 14); `clang-format -i FILE` formats a file.
+check-format: deps
+	./scripts/check-format.sh
 
 clean:
 	rm -rf $(BUILD) $(SAN_BUILD) results

@@ -143,4 +143,7 @@ int run(int argc, char** argv)
 }
 }  // namespace
 
-int main(int argc, char** argv) { return runApp("vlo-eval", [&] { return run(argc, argv); }); }
+int main(int argc, char** argv)
+{
+	return runApp("vlo-eval", [&] { return run(argc, argv); });
+}

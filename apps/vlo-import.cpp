@@ -163,7 +163,7 @@ int main(int argc, char** argv)
 		if (sub == "kitti-odometry") return kittiOdometry(argc, argv);
 		if (sub == "kitti-raw") return kittiRaw(argc, argv);
 		if (sub == "rosbag") return rosbag(argc, argv);
-		vlo::failInput("command line", sub.empty() ? "missing subcommand (kitti-odometry, kitti-raw or rosbag; see --help)"
-												   : "unknown subcommand '" + sub + "' (see --help)");
+		vlo::failInput("command line",
+			sub.empty() ? "missing subcommand (kitti-odometry, kitti-raw or rosbag; see --help)" : "unknown subcommand '" + sub + "' (see --help)");
 	});
 }

@@ -35,9 +35,9 @@ int main(int argc, char** argv)
 				{"rawlog-compression", "none|gzip", "none (default) or gzip: ~1.4x smaller, read and written with more CPU (doc/SPEED.md)"},
 				{"image-format", "pnm|png", "pnm (PGM, default) or png: ~1.8x smaller images, read and written with more CPU (doc/SPEED.md)"}},
 			"vlo-sim --out FILE.rawlog [options]\n\n"
-			  "Renders a seeded procedural drive headless: a grayscale camera (KITTI intrinsics) and a\n"
-			  "spinning LiDAR, 10 Hz, with ground truth in FILE.gt.tum (vehicle frame, relative to frame 0).\n"
-			  "By default the sensors are realistic (--realism); --no-realism gives the exact sensor.");
+			"Renders a seeded procedural drive headless: a grayscale camera (KITTI intrinsics) and a\n"
+			"spinning LiDAR, 10 Hz, with ground truth in FILE.gt.tum (vehicle frame, relative to frame 0).\n"
+			"By default the sensors are realistic (--realism); --no-realism gives the exact sensor.");
 		vlo::sim::SimConfig cfg;
 		cfg.scenario = vlo::sim::parseScenario(cl.get("scenario", "urban"));
 		cfg.lidar = vlo::sim::lidarByName(cl.get("lidar", "hdl64"));
@@ -103,8 +103,8 @@ int main(int argc, char** argv)
 		out.description = cmd;
 		const auto st = vlo::sim::writeSequence(sim, out);
 		std::printf("vlo-sim: %d frames, %.0f points/frame, %.2f s/frame (%.1f s + %.1f s setup) -> %s, %s%s%s\n",
-				st.frames, st.points_per_frame, st.seconds / st.frames, st.seconds, setup, out.rawlog.c_str(),
-				st.ground_truth.c_str(), out.kitti_dir.empty() ? "" : ", ", out.kitti_dir.c_str());
+			st.frames, st.points_per_frame, st.seconds / st.frames, st.seconds, setup, out.rawlog.c_str(),
+			st.ground_truth.c_str(), out.kitti_dir.empty() ? "" : ", ", out.kitti_dir.c_str());
 		if (cfg.traffic > 0)
 		{
 			double within = 0;

@@ -76,8 +76,7 @@ void projectedFrames(
 		while (k < want)
 		{
 			if (!reader.next(f))
-				failInput(rawlog, "has only " + std::to_string(k + 1) + " frames; --frame " + std::to_string(want) +
-						" does not exist");
+				failInput(rawlog, "has only " + std::to_string(k + 1) + " frames; --frame " + std::to_string(want) + " does not exist");
 			++k;
 		}
 		if (!f.has_image || !f.has_scan)
@@ -109,10 +108,10 @@ int run(int argc, char** argv)
 			{"title", "TEXT", "title above the top-down and 3D views"},
 			{"out", "DIR", "output folder (created if missing)", true}},
 		"vlo-snapshot --traj A.tum [--traj B.tum ...] [--name A ...] [--gt GT.tum]\n"
-		  "             [--map map.pcd] [--rawlog R.rawlog --frame K ...] --out DIR\n\n"
-		  "Writes DIR/topdown.png (trajectories, from above), DIR/map3d.png (map with\n"
-		  "trajectories, oblique) and DIR/frame_KKKKKK.png (image with the LiDAR scan projected).\n"
-		  "Headless: no display is needed. See doc/SNAPSHOTS.md.");
+		"             [--map map.pcd] [--rawlog R.rawlog --frame K ...] --out DIR\n\n"
+		"Writes DIR/topdown.png (trajectories, from above), DIR/map3d.png (map with\n"
+		"trajectories, oblique) and DIR/frame_KKKKKK.png (image with the LiDAR scan projected).\n"
+		"Headless: no display is needed. See doc/SNAPSHOTS.md.");
 	const auto trajFiles = cl.getAll("traj"), names = cl.getAll("name");
 	if (names.size() > trajFiles.size())
 		failInput("--name",

@@ -17,7 +17,11 @@ fi
 if [ $# -gt 0 ]; then
 	files=("$@")
 else
-	mapfile -t files < <(git ls-files -- '*.cpp' '*.h' '*.hpp' '*.cc')
+	if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
+		mapfile -t files < <(git ls-files -- '*.cpp' '*.h' '*.hpp' '*.cc')
+	else  # an export without .git: the same folders
+		mapfile -t files < <(find modules apps bench fuzz tests -name '*.cpp' -o -name '*.h' -o -name '*.hpp' -o -name '*.cc' | sort)
+	fi
 fi
 [ ${#files[@]} -gt 0 ] || { echo "check-format: no C++ files"; exit 0; }
 version=$("$cf" --version | grep -oE '[0-9]+\.[0-9]+\.[0-9]+' | head -1)

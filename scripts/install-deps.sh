@@ -7,6 +7,7 @@ PKGS=(build-essential cmake pkg-config xz-utils
       nlohmann-json3-dev libcli11-dev libnanoflann-dev  # JSON files, command lines, kd-tree (LOAM)
       libgtest-dev libbenchmark-dev libgl-dev libegl-dev parallel
       python3  # the e2e scripts read CSV with its csv module
+      clang-format  # scripts/check-format.sh (CI): the code keeps .clang-format
       libjpeg62-turbo-dev  # jpeglib.h: the rawlog reader turns libjpeg errors into exceptions
       libegl-mesa0 libgl1-mesa-dri)  # headless rendering (EGL + llvmpipe) for the simulator and snapshots
 missing=()

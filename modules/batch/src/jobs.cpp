@@ -52,7 +52,8 @@ void requireSameSimArgs(const Sequence& s)
 	std::string recorded;
 	std::getline(in, recorded);
 	if (recorded != simRecord(s))
-		failInput(s.rawlog, "was generated with vlo-sim " + recorded + " but the plan's sim line says " + simRecord(s) +
+		failInput(s.rawlog,
+			"was generated with vlo-sim " + recorded + " but the plan's sim line says " + simRecord(s) +
 				": delete the drive (.rawlog, .gt.tum, _Images/, .sim.txt) to generate it again");
 }
 
@@ -118,7 +119,8 @@ std::string shellLine(const RunJob& j)
 		" || exit 1; rm -f exit_code summary.json trajectory_*.tum eval_* aligned_*; ( " + shellJoin(j.run.argv) + " > " +
 		j.run.out + " 2> " + j.run.err +
 		" || exit $?; rc=0; for f in trajectory_*.tum; do [ -e \"$f\" ] || continue; "
-		"t=${f#trajectory_}; t=${t%.tum}; " + eval +
+		"t=${f#trajectory_}; t=${t%.tum}; " +
+		eval +
 		" || rc=1; done; exit $rc ); rc=$?; echo $rc > exit_code; exit $rc";
 }
 }  // namespace vlo::batch

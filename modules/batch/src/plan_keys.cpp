@@ -73,7 +73,8 @@ std::vector<std::string> checkSimArgs(
 		if (a.rfind("--", 0) != 0) failInput(at, "unexpected word '" + a + "' (expected vlo-sim options)");
 		const auto it = kOptions.find(a.substr(2));
 		if (it == kOptions.end())
-			failInput(at, "'" + a + "' is not allowed (vlo-sim options: --scenario --lidar --frames --seed " +
+			failInput(at,
+				"'" + a + "' is not allowed (vlo-sim options: --scenario --lidar --frames --seed " +
 					"--trajectory --lidar-distortion --no-noise --foliage-depth --blackout --realism --no-realism --point-times; "
 					"vlo-batch sets --out and --quiet)");
 		if (!it->second) continue;

@@ -26,7 +26,8 @@ std::string number(double v)
 
 const char* statusName(RunStatus s)
 {
-	return s == RunStatus::Ok ? "ok" : s == RunStatus::Failed ? "failed" : "not run";
+	return s == RunStatus::Ok ? "ok" : s == RunStatus::Failed ? "failed"
+															  : "not run";
 }
 
 /// vlo-eval JSON keys, in column order (doc/EVALUATION.md).

@@ -132,7 +132,8 @@ std::string markdownResults(
 		for (const auto& n : names) (isVisualOdometry(n) ? voRows : odoRows).push_back({c.name, n});
 	}
 	std::size_t ok = 0, failed = 0, missing = 0;
-	for (const auto& r : rs) (r.status == RunStatus::Ok ? ok : r.status == RunStatus::Failed ? failed : missing)++;
+	for (const auto& r : rs) (r.status == RunStatus::Ok ? ok : r.status == RunStatus::Failed ? failed
+																							 : missing)++;
 
 	std::ostringstream o;
 	o << "# vlo-batch results\n\nPlan `" << plan.source << "` (resolved copy: `plan.ini`), data in `" << plan.data_dir
@@ -165,12 +166,14 @@ std::string markdownResults(
 	}
 	if (!fails.str().empty())
 		o << "\n## Failures\n\nFirst error line of each; the logs are in runs/SEQUENCE/CONFIG/ (vlo-run.err, eval_*.err).\n\n"
-		  << "| run | error |\n|---|---|\n" << fails.str();
+		  << "| run | error |\n|---|---|\n"
+		  << fails.str();
 	std::ostringstream reports;  // each run's own report (vlo-run's report.md), where it wrote one
 	for (const auto& r : rs)
 		if (std::filesystem::is_regular_file(r.dir + "/report.md"))
 			reports << "- [" << r.sequence << " / " << r.config << "](runs/" << r.sequence << "/" << r.config << "/report.md)\n";
-	if (!reports.str().empty()) o << "\n## Run reports\n\n" << reports.str();
+	if (!reports.str().empty()) o << "\n## Run reports\n\n"
+								  << reports.str();
 	if (!snapshots.empty())
 	{
 		o << "\n## Trajectories\n\nTop-down, every configuration against the ground truth (Sim(3)-aligned where the "

@@ -101,7 +101,8 @@ TEST(BatchJobs, RunCommandLines)
 	EXPECT_EQ(j.evalStep("vo").err, "eval_vo.err");
 	const std::string line = shellLine(j);
 	EXPECT_NE(line.find("'/bin dir/vlo-run' --rawlog /data/seq.rawlog --ini '/ini/sim hdl64.ini' --out /out/runs/seq/vo"),
-		std::string::npos) << line;
+		std::string::npos)
+		<< line;
 	EXPECT_NE(line.find("--set pipeline.mode=vo --set 'a.b=x y' > vlo-run.out 2> vlo-run.err"), std::string::npos) << line;
 	EXPECT_NE(line.find("--align sim3 --kitti-lengths 5,10 --est \"trajectory_$t.tum\""), std::string::npos) << line;
 	EXPECT_EQ(line.find('\n'), std::string::npos);
@@ -146,7 +147,8 @@ TEST(BatchJobs, ShellLineAndDirectExecutionLeaveTheSameFiles)
 		{
 			EXPECT_EQ(a.count("aligned_lo.tum") + a.count("aligned_vo.tum"), 2u);
 			EXPECT_NE(a["eval_lo.json"].find("--align sim3 --kitti-lengths 5,10 --est trajectory_lo.tum --json eval_lo.json"),
-				std::string::npos) << a["eval_lo.json"];
+				std::string::npos)
+				<< a["eval_lo.json"];
 		}
 		if (c.name == "bad")
 		{

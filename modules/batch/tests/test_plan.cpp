@@ -29,7 +29,8 @@ struct BatchPlan : public ::testing::Test
 		try
 		{
 			parse(text);
-			ADD_FAILURE() << "no error for:\n" << text;
+			ADD_FAILURE() << "no error for:\n"
+						  << text;
 		}
 		catch (const InputError& e)
 		{

@@ -23,7 +23,7 @@ std::string evalJson(const std::string& ate, const std::string& are, const std::
 	return "{\n  \"gt\": \"a \\\"b\\\".tum\",\n  \"n_matched\": 25,\n  \"gt_length_m\": 31.5,\n  \"ate_rmse_m\": " + ate +
 		",\n  \"are_rmse_deg\": " + are + ",\n  \"sim3_scale\": 0.98,\n  \"ate_note\": null,\n  \"kitti_t_err_pct\": " + t +
 		",\n  \"kitti_r_err_deg_per_m\": " + r + ",\n  \"kitti_segments\": 12,\n  \"kitti_per_length\": [\n    {\"length_m\": 10, "
-		"\"segments\": 6, \"t_err_pct\": 1.5}\n  ],\n  \"kitti_note\": null\n}\n";
+												 "\"segments\": 6, \"t_err_pct\": 1.5}\n  ],\n  \"kitti_note\": null\n}\n";
 }
 
 const std::string kTum = "0 0 0 0 0 0 0 1\n0.1 1 0 0 0 0 0 1\n0.2 2 0.1 0 0 0 0 1\n";
@@ -154,7 +154,8 @@ TEST_F(BatchTables, SnapshotPerSequenceWithTrajectories)
 TEST(BatchJson, ScalarsStringsAndNulls)
 {
 	const auto j = JsonFields::parse("{\"a\": 1.5e2, \"b\": null, \"s\": \"x \\\"y\\\"\\n\", \"arr\": [1, {\"c\": \"]\"}], \"o\": {}, "
-									 "\"t\": true}", "j");
+									 "\"t\": true}",
+		"j");
 	EXPECT_DOUBLE_EQ(j.number("a"), 150.0);
 	EXPECT_TRUE(std::isnan(j.number("b")));
 	EXPECT_TRUE(std::isnan(j.number("missing")));

@@ -26,8 +26,9 @@ std::vector<IniSection> scanIniText(const std::string& text, const std::string& 
 			const std::string name = trimmed(t.substr(1, close - 1));
 			for (const auto& s : sections)
 				if (s.name == name)
-					failInput(at, "section [" + printable(name) + "] given twice (also line " + std::to_string(s.line) +
-							"; MRPT would merge them silently)");
+					failInput(at,
+						"section [" + printable(name) + "] given twice (also line " +
+							std::to_string(s.line) + "; MRPT would merge them silently)");
 			sections.push_back({name, n, {}});
 			continue;
 		}
@@ -39,7 +40,8 @@ std::vector<IniSection> scanIniText(const std::string& text, const std::string& 
 		auto& keys = sections.back().keys;
 		for (const auto& k : keys)
 			if (k == key)
-				failInput(at, "[" + printable(sections.back().name) + "] " + printable(key) +
+				failInput(at,
+					"[" + printable(sections.back().name) + "] " + printable(key) +
 						": given twice (MRPT would keep only the last; put every value on one line)");
 		keys.push_back(key);
 	}

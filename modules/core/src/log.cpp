@@ -49,7 +49,8 @@ void setupLogging(const std::string& app)
 
 void setVerbosity(bool verbose, bool quiet)
 {
-	const auto level = quiet ? mrpt::system::LVL_ERROR : verbose ? mrpt::system::LVL_DEBUG : mrpt::system::LVL_INFO;
+	const auto level = quiet ? mrpt::system::LVL_ERROR : verbose ? mrpt::system::LVL_DEBUG
+																 : mrpt::system::LVL_INFO;
 	logger().setMinLoggingLevel(level);
 	logger().setVerbosityLevelForCallbacks(level);
 	if (quiet) ProgressLine::setEnabled(false);

@@ -37,11 +37,13 @@ EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptio
 	r.association = associate(gt, est, opts.association);
 	const Association& a = r.association;
 	if (a.matched() == 0)
-		failInput(opts.est_name, "no pose overlaps the ground truth " + opts.gt_name + " in time (estimate " +
-				span(est) + ", ground truth " + span(gt) + ")");
+		failInput(opts.est_name,
+			"no pose overlaps the ground truth " + opts.gt_name + " in time (estimate " + span(est) +
+				", ground truth " + span(gt) + ")");
 	if (a.matched() < 3)
-		failInput(opts.est_name, "only " + std::to_string(a.matched()) + " poses overlap the ground truth " +
-				opts.gt_name + " in time; at least 3 are needed");
+		failInput(opts.est_name,
+			"only " + std::to_string(a.matched()) + " poses overlap the ground truth " + opts.gt_name +
+				" in time; at least 3 are needed");
 	r.gt_length_m = pathLength(a.gt);
 	r.est_length_m = pathLength(a.est);
 

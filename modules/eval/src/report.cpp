@@ -25,7 +25,9 @@ nlohmann::ordered_json noteOrNull(const std::string& s) { return s.empty() ? nlo
 
 std::string metricName(const EvalOptions& o)
 {
-	return o.ate && o.kitti && o.rpe ? "all" : o.ate ? "ate" : o.kitti ? "kitti" : "rpe";
+	return o.ate && o.kitti && o.rpe ? "all" : o.ate ? "ate"
+		: o.kitti                                    ? "kitti"
+													 : "rpe";
 }
 
 std::string fmt(const char* f, double v)
@@ -113,11 +115,11 @@ std::string formatTable(const EvalReport& r)
 	const std::string al = std::string("(") + toString(r.options.align) + " aligned)";
 	if (r.ate)
 	{
-		row("ATE RMSE " + al, fmt("%.4f m", r.ate->ate_rmse_m) +
-				(r.gt_length_m > 0 ? fmt("  (%.3f %% of length)", 100 * r.ate->ate_rmse_m / r.gt_length_m) : ""));
+		const std::string of_length = r.gt_length_m > 0 ? fmt("  (%.3f %% of length)", 100 * r.ate->ate_rmse_m / r.gt_length_m) : "";
+		row("ATE RMSE " + al, fmt("%.4f m", r.ate->ate_rmse_m) + of_length);
 		const auto& roll = r.ate->are_roll_from_orientations_deg;
-		row("ARE RMSE " + al, r.ate->are_rmse_deg ? fmt("%.4f deg", *r.ate->are_rmse_deg) +
-					(roll ? "  (roll about the path from the orientations)" : "") : "n/a: " + r.are_note);
+		const std::string roll_note = roll ? "  (roll about the path from the orientations)" : "";
+		row("ARE RMSE " + al, r.ate->are_rmse_deg ? fmt("%.4f deg", *r.ate->are_rmse_deg) + roll_note : "n/a: " + r.are_note);
 		row("Sim(3) scale", r.ate->sim3_scale ? fmt("%.5f", *r.ate->sim3_scale) : "n/a: the estimate does not move");
 	}
 	else
@@ -139,9 +141,12 @@ std::string formatTable(const EvalReport& r)
 	{
 		const auto& e = *r.rpe;
 		o << "\n";
-		row("RPE per step, RMS", fmt("%.4f m", e.t_rmse_m) + fmt(" / %.4f deg", e.r_rmse_deg) + fmt("  (x %.4f", e.t_rmse_axes_m.x()) +
-				fmt(", y %.4f", e.t_rmse_axes_m.y()) + fmt(", z %.4f m)", e.t_rmse_axes_m.z()));
-		row("GT constant velocity", fmt("%.4f m", e.cv_t_rmse_m) + fmt(" / %.4f deg", e.cv_r_rmse_deg) +
+		row("RPE per step, RMS",
+			fmt("%.4f m", e.t_rmse_m) + fmt(" / %.4f deg", e.r_rmse_deg) +
+				fmt("  (x %.4f", e.t_rmse_axes_m.x()) + fmt(", y %.4f", e.t_rmse_axes_m.y()) +
+				fmt(", z %.4f m)", e.t_rmse_axes_m.z()));
+		row("GT constant velocity",
+			fmt("%.4f m", e.cv_t_rmse_m) + fmt(" / %.4f deg", e.cv_r_rmse_deg) +
 				" RMS per step (each step predicted by the one before)");
 	}
 	else

@@ -75,7 +75,7 @@ inline Eigen::Isometry3d motion(double x, double y, double z, double yaw_deg, do
 	T.linear() = (Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitZ()) *
 		Eigen::AngleAxisd(pitch_deg * M_PI / 180, Eigen::Vector3d::UnitY()) *
 		Eigen::AngleAxisd(roll_deg * M_PI / 180, Eigen::Vector3d::UnitX()))
-					  .toRotationMatrix();
+					 .toRotationMatrix();
 	T.translation() = Eigen::Vector3d(x, y, z);
 	return T;
 }

@@ -43,8 +43,7 @@ std::vector<double> KittiCalibFile::get(const std::string& key, std::size_t n) c
 	if (it == values_.end())
 		failInput(path_, non_numeric_.count(key) ? "key '" + key + "' does not hold numbers" : "missing key '" + key + "'");
 	if (it->second.size() != n)
-		failInput(path_, "key '" + key + "' has " + std::to_string(it->second.size()) + " numbers, expected " +
-				std::to_string(n));
+		failInput(path_, "key '" + key + "' has " + std::to_string(it->second.size()) + " numbers, expected " + std::to_string(n));
 	for (double d : it->second)
 		if (!std::isfinite(d)) failInput(path_, "key '" + key + "' holds a non-finite number");
 	return it->second;

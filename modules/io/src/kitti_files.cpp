@@ -81,8 +81,7 @@ std::vector<double> readKittiRawTimestamps(const std::string& path)
 		if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
 		double t = 0;
 		if (!parseKittiDate(line, t))
-			failInput(path, "line " + std::to_string(lineNo) + ": '" + printable(line) +
-					"' is not a date like 2011-09-26 13:02:25.964389445");
+			failInput(path, "line " + std::to_string(lineNo) + ": '" + printable(line) + "' is not a date like 2011-09-26 13:02:25.964389445");
 		if (!times.empty() && t <= times.back())
 			failInput(path, "line " + std::to_string(lineNo) + ": time is not after the previous one");
 		times.push_back(t);

@@ -67,7 +67,8 @@ void writeKittiFrames(const std::vector<KittiFrameFiles>& frames, SensorRig rig,
 			const int w = static_cast<int>(f.image.getWidth()), h = static_cast<int>(f.image.getHeight());
 			if (rig.camera.width == 0) rig.camera.width = w, rig.camera.height = h;
 			if (w != rig.camera.width || h != rig.camera.height)
-				failInput(files.image, "image is " + std::to_string(w) + "x" + std::to_string(h) + ", expected " +
+				failInput(files.image,
+					"image is " + std::to_string(w) + "x" + std::to_string(h) + ", expected " +
 						std::to_string(rig.camera.width) + "x" + std::to_string(rig.camera.height) +
 						" (calibration or first image)");
 			f.has_image = true;

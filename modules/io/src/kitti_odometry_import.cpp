@@ -42,8 +42,9 @@ ImportSummary importKittiOdometry(const KittiOdometryImport& opt)
 	const std::string image_dir = seq + "/image_" + std::to_string(camera);
 	for (int other = 0; other < 4 && !fs::is_directory(image_dir); ++other)  // e.g. colour-only downloads
 		if (fs::is_directory(seq + "/image_" + std::to_string(other)))
-			failInput(image_dir, "directory not found (this sequence has image_" + std::to_string(other) + ": give --camera " +
-					std::to_string(other) + ")");
+			failInput(image_dir,
+				"directory not found (this sequence has image_" + std::to_string(other) +
+					": give --camera " + std::to_string(other) + ")");
 	const auto images = listNumberedFiles(image_dir, "png");
 	const auto times = readKittiTimes(times_path);
 
@@ -78,8 +79,10 @@ ImportSummary importKittiOdometry(const KittiOdometryImport& opt)
 		KittiFrameFiles f;
 		f.index = static_cast<std::size_t>(i);
 		if (f.index >= times.size())
-			failInput(times_path, "has " + std::to_string(times.size()) + " times, " +
-					(image != images.end() ? "image " + image->second : "scan " + scan->second) + " has none");
+			failInput(times_path,
+				"has " + std::to_string(times.size()) + " times, " +
+					(image != images.end() ? "image " + image->second : "scan " + scan->second) +
+					" has none");
 		f.t_image = f.t_scan = times[f.index];
 		if (image != images.end()) f.image = image->second;
 		if (scan != scans.end()) f.scan = scan->second;

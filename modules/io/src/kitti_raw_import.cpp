@@ -26,7 +26,8 @@ std::vector<double> timesIfPresent(const std::string& path, long max_index)
 	if (!fs::exists(path)) return {};
 	auto t = readKittiRawTimestamps(path);
 	if (static_cast<long>(t.size()) <= max_index)
-		failInput(path, "has " + std::to_string(t.size()) + " lines: frames " + std::to_string(t.size()) + " to " +
+		failInput(path,
+			"has " + std::to_string(t.size()) + " lines: frames " + std::to_string(t.size()) + " to " +
 				std::to_string(max_index) + " have no time");
 	return t;
 }
@@ -39,7 +40,8 @@ SpinningSweep sweepOf(std::size_t index, double t_scan, const std::vector<double
 {
 	const double period = end[index] - start[index], fraction = (t_scan - start[index]) / period;
 	if (!(period > 0.01 && period < 1.0) || !(fraction >= 0 && fraction <= 1))
-		failInput(velo_dir + "/timestamps_start.txt", "frame " + std::to_string(index) +
+		failInput(velo_dir + "/timestamps_start.txt",
+			"frame " + std::to_string(index) +
 				": the sweep's start, end and time (timestamps_start, timestamps_end, timestamps) are not in order within 1 s");
 	return SpinningSweep{kKittiLaserClockwise, period, 0.0, fraction};
 }
@@ -107,7 +109,7 @@ ImportSummary importKittiRaw(const KittiRawImport& opt)
 	const bool sweep_stamps = !t_start.empty() && !t_end.empty() && fs::exists(velo_dir + "/timestamps.txt");
 	if (lidar && !sweep_stamps)
 		summary.warnings.push_back(velo_dir + ": no timestamps_start.txt / timestamps_end.txt / timestamps.txt, scans written "
-										  "without point times ([lidar] point_times = auto takes them from the azimuth)");
+											  "without point times ([lidar] point_times = auto takes them from the azimuth)");
 
 	std::vector<KittiFrameFiles> frames;
 	std::size_t missing_scans = 0;

@@ -76,7 +76,8 @@ void chooseCalibration(CObservationVelodyneScan& obs, const std::string& where, 
 	const std::size_t carried = obs.calibration.laser_corrections.size();
 	if (carried > 0 && (!model || carried == model->lasers)) return;
 	if (!model)
-		failInput(where, "Velodyne scan without calibration and of unknown model (packet product id " +
+		failInput(where,
+			"Velodyne scan without calibration and of unknown model (packet product id " +
 				std::to_string(obs.scan_packets.front().velodyne_model_ID) +
 				"; known: 0x21 HDL-32E, 0x22 VLP-16): record it with its calibration");
 	obs.calibration = VelodyneCalibration::LoadDefaultCalibration(model->calibration);
@@ -185,7 +186,8 @@ ScanReading readScanObservation(CObservation& obs, const std::string& where)
 		if (!pc->pointcloud) failInput(where, "CObservationPointCloud without a point cloud");
 		return fromPointsMap(*pc->pointcloud);
 	}
-	failInput(where, std::string("LiDAR observation is a ") + obs.GetRuntimeClass()->className +
+	failInput(where,
+		std::string("LiDAR observation is a ") + obs.GetRuntimeClass()->className +
 			", which vlo does not read (CObservationPointCloud or CObservationVelodyneScan)");
 }
 

@@ -98,7 +98,8 @@ bool ObservationStream::readObject()
 	else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
 		for (const auto& o : *sf) pending_.push_back(o);
 	else if (!std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
-		failInput(path_, std::string(objects_ == 1 ? "not an MRPT rawlog" : "unexpected object") + " (" + nth +
+		failInput(path_,
+			std::string(objects_ == 1 ? "not an MRPT rawlog" : "unexpected object") + " (" + nth +
 				" is a " + obj->GetRuntimeClass()->className + ")");
 	return true;
 }

@@ -62,7 +62,8 @@ void checkBeforePcl(const std::string& path)
 	const std::uint64_t bytes = h.bytesPerPoint() * std::uint64_t(h.points);
 	const std::uint64_t follow = std::filesystem::file_size(path) - std::uint64_t(in.tellg());
 	if (follow < bytes)
-		failInput(path, "truncated: header says " + std::to_string(h.points) + " points (" + std::to_string(bytes) +
+		failInput(path,
+			"truncated: header says " + std::to_string(h.points) + " points (" + std::to_string(bytes) +
 				" bytes) but only " + std::to_string(follow) + " bytes follow");
 }
 
@@ -143,7 +144,9 @@ PointCloud readPcd(const std::string& path)
 	{
 		failInput(path, e.detailedMessage());
 	}
-	const auto *x = findField(c, "x"), *y = findField(c, "y"), *z = findField(c, "z"), *i = findField(c, "intensity") ? findField(c, "intensity") : findField(c, "i");
+	const auto *x = findField(c,
+				   "x"),
+			   *y = findField(c, "y"), *z = findField(c, "z"), *i = findField(c, "intensity") ? findField(c, "intensity") : findField(c, "i");
 	if (!x || !y || !z) failInput(path, "FIELDS lacks x, y or z");
 	const std::size_t n = std::size_t(c.width) * c.height;
 	if (c.data.size() < n * c.point_step) failInput(path, "truncated: fewer bytes than the header's points");

@@ -64,8 +64,7 @@ struct RawlogReader::Impl
 		if (obs.timestamp == INVALID_TIMESTAMP) failInput(path, "'" + obs.sensorLabel + "' observation without timestamp");
 		const double t = toSeconds(obs.timestamp);
 		if (last && t <= *last)
-			failInput(path, "timestamps out of order: '" + obs.sensorLabel + "' observation at t=" + secs(t) +
-					" follows one at t=" + secs(*last));
+			failInput(path, "timestamps out of order: '" + obs.sensorLabel + "' observation at t=" + secs(t) + " follows one at t=" + secs(*last));
 		last = t;
 		return t;
 	}
@@ -96,7 +95,8 @@ struct RawlogReader::Impl
 		else if (obs->sensorLabel == opt.lidar_label)
 		{
 			if (!isScanObservation(*obs))
-				failInput(path, "'" + opt.lidar_label + "' observation is a " + cls +
+				failInput(path,
+					"'" + opt.lidar_label + "' observation is a " + cls +
 						", expected CObservationPointCloud or CObservationVelodyneScan");
 			scan_t.push_back(timeOf(*obs, last_scan_t));
 			scans.push_back(obs);
@@ -127,12 +127,14 @@ struct RawlogReader::Impl
 		const int w = static_cast<int>(img.getWidth()), h = static_cast<int>(img.getHeight());
 		const std::string size = std::to_string(w) + "x" + std::to_string(h);
 		if (w != cam.width || h != cam.height)
-			failInput(path, "image at t=" + secs(t) + " is " + size + " but its cameraParams say " +
+			failInput(path,
+				"image at t=" + secs(t) + " is " + size + " but its cameraParams say " +
 					std::to_string(cam.width) + "x" + std::to_string(cam.height));
 		if (first_w < 0)
 			first_w = w, first_h = h;
 		else if (w != first_w || h != first_h)
-			failInput(path, "image at t=" + secs(t) + " is " + size + " but the first image was " +
+			failInput(path,
+				"image at t=" + secs(t) + " is " + size + " but the first image was " +
 					std::to_string(first_w) + "x" + std::to_string(first_h));
 		rig.has_camera = true;
 		rig.camera = cam;
@@ -176,7 +178,8 @@ struct RawlogReader::Impl
 			if (need && !stats.labels.count(label))
 				failInput(path, "no observations labelled '" + label + "' (labels seen: " + labelsSeen() + ")");
 		if (stats.frames == 0)
-			failInput(path, "no frames: " + std::to_string(stats.unpaired_images) + " images and " +
+			failInput(path,
+				"no frames: " + std::to_string(stats.unpaired_images) + " images and " +
 					std::to_string(stats.unpaired_scans) + " scans, none within " + secs(opt.max_time_diff) +
 					" of a partner");
 	}

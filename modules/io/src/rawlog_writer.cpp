@@ -129,7 +129,8 @@ void RawlogWriter::writeFrame(const Frame& frame, const std::string& camera_labe
 		auto obs = toImageObservation(frame, camera_label);
 		if (d.external)
 		{
-			const char* ext = d.image_format == ImageFileFormat::Png ? "png" : obs->image.isColor() ? "ppm" : "pgm";
+			const char* ext = d.image_format == ImageFileFormat::Png ? "png" : obs->image.isColor() ? "ppm"
+																									: "pgm";
 			char name[64];
 			std::snprintf(name, sizeof(name), "_%06zu.%s", frame.index, ext);
 			const std::string file = camera_label + name;

@@ -30,8 +30,7 @@ std::vector<double> parseNumbers(const std::string& line, size_t n, const std::s
 		v.push_back(d);
 	}
 	if (v.size() != n)
-		failInput(path, "line " + std::to_string(lineNo) + ": expected " + std::to_string(n) + " numbers, found " +
-				std::to_string(v.size()));
+		failInput(path, "line " + std::to_string(lineNo) + ": expected " + std::to_string(n) + " numbers, found " + std::to_string(v.size()));
 	return v;
 }
 
@@ -71,8 +70,7 @@ Trajectory readTum(const std::string& path)
 		StampedPose p;
 		p.t = v[0];
 		if (!traj.empty() && p.t <= traj.back().t)
-			failInput(path, "line " + std::to_string(lineNo) + ": timestamp " + std::to_string(p.t) +
-					" is not after the previous one");
+			failInput(path, "line " + std::to_string(lineNo) + ": timestamp " + std::to_string(p.t) + " is not after the previous one");
 		Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
 		if (q.norm() < 1e-6) failInput(path, "line " + std::to_string(lineNo) + ": zero quaternion");
 		p.pose.linear() = q.normalized().toRotationMatrix();
@@ -104,7 +102,8 @@ TrajectoryFormat trajectoryFormatOf(const std::string& path)
 		for (std::string tok; ss >> tok;) ++n;
 		if (n == 8) return TrajectoryFormat::Tum;
 		if (n == 12) return TrajectoryFormat::Kitti;
-		failInput(path, "line " + std::to_string(lineNo) + ": " + std::to_string(n) +
+		failInput(path,
+			"line " + std::to_string(lineNo) + ": " + std::to_string(n) +
 				" values, expected 8 (TUM: t x y z qx qy qz qw) or 12 (KITTI poses: row-major 3x4)");
 	}
 	failInput(path, "no pose (an empty file, or only comments)");

@@ -38,7 +38,6 @@ TEST(RawlogReader, PairsByNearestTimeWithinTolerance)
 	EXPECT_EQ(stats.unpaired_images, 2u);
 	EXPECT_EQ(stats.unpaired_scans, 1u);
 	EXPECT_EQ(stats.observations, 7u);
-
 }
 
 TEST(RawlogReader, ToleranceDecidesWhatPairs)

@@ -27,7 +27,8 @@ std::string buildOdometry(const std::string& root)
 	fs::create_directories(seq + "/image_0");
 	fs::create_directories(seq + "/velodyne");
 	fs::create_directories(root + "/poses");
-	std::ofstream(seq + "/calib.txt") << "P0: 50 0 20 0 0 50 15 0 0 0 1 0\n" << kTr;
+	std::ofstream(seq + "/calib.txt") << "P0: 50 0 20 0 0 50 15 0 0 0 1 0\n"
+									  << kTr;
 	std::ofstream(seq + "/times.txt") << "0.000000e+00\n1.000000e-01\n2.000000e-01\n";
 	std::ofstream(root + "/poses/00.txt") << "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1 1\n1 0 0 0 0 1 0 0 0 0 1 2\n";
 	for (int k = 0; k < 3; ++k)
@@ -35,8 +36,7 @@ std::string buildOdometry(const std::string& root)
 		char name[16];
 		std::snprintf(name, sizeof(name), "%06d", k);
 		testFrame(k, 0, 40, 30).image.saveToFile(seq + "/image_0/" + name + ".png");
-		writeKittiBin(seq + "/velodyne/" + std::string(name) + ".bin", {{1, 2, 3, 0.5f}, {4, 5, 6, 0}, {7, 8, 9, 1},
-																		  {10, 0, 1, 0}, {0, 10, 1, 0}});
+		writeKittiBin(seq + "/velodyne/" + std::string(name) + ".bin", {{1, 2, 3, 0.5f}, {4, 5, 6, 0}, {7, 8, 9, 1}, {10, 0, 1, 0}, {0, 10, 1, 0}});
 	}
 	return seq;
 }
@@ -110,7 +110,8 @@ TEST(KittiOdometryBuilt, BadInputFailsNamingTheFileAndLeavesNoOutput)
 
 	std::ofstream(seq + "/calib.txt") << kTr;
 	expectInputError([&] { importKittiOdometry(opt); }, {seq + "/calib.txt", "missing key 'P0'"});
-	std::ofstream(seq + "/calib.txt") << "P0: 50 0 20 0 0 50 15 0 0 0 1 0\n" << kTr;
+	std::ofstream(seq + "/calib.txt") << "P0: 50 0 20 0 0 50 15 0 0 0 1 0\n"
+									  << kTr;
 
 	fs::rename(seq + "/image_0", seq + "/image_x");
 	expectInputError([&] { importKittiOdometry(opt); }, {seq + "/image_0", "directory not found"});

@@ -51,8 +51,9 @@ TEST(FrameTable, DocumentedColumnOrderWhateverTheOrderOfWriting)
 	t.set("scale_s", 1.0, 3);  // a module that starts writing at a later frame
 	t.set("ms_scale", 1.0, 2);
 	t.set("vo_metric_motion", true);
-	EXPECT_EQ(t.columns(), (std::vector<std::string>{"frame", "t", "x", "y", "z", "vo_state", "vo_metric_motion", "lo_status",
-							   "scale_s", "ms_vo_track", "ms_lo_mapping", "ms_scale", "ms_total"}));
+	const std::vector<std::string> expected{"frame", "t", "x", "y", "z", "vo_state", "vo_metric_motion", "lo_status",
+		"scale_s", "ms_vo_track", "ms_lo_mapping", "ms_scale", "ms_total"};
+	EXPECT_EQ(t.columns(), expected);
 }
 
 // An estimator's StageTimes become one column per stage, in its declared order, whatever ran first.

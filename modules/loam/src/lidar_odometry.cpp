@@ -138,12 +138,13 @@ LidarOdometryResult LidarOdometry::process(
 	r.n_rings = scan.n_rings;
 	r.ms.add("features", scan.ms + lapMs(t0));
 	if (scan.n_valid == 0)
-		return skip(r, "no usable points (" + std::to_string(scan.n_input) + " given: " + std::to_string(scan.n_invalid) +
-				" invalid, " + std::to_string(scan.n_out_of_range) + " out of range, " + std::to_string(scan.n_out_of_fov) +
+		return skip(r,
+			"no usable points (" + std::to_string(scan.n_input) + " given: " +
+				std::to_string(scan.n_invalid) + " invalid, " + std::to_string(scan.n_out_of_range) +
+				" out of range, " + std::to_string(scan.n_out_of_fov) +
 				" out of the vertical field of view)");
 	if (r.n_rings < opt_.features.min_rings)
-		return skip(r, "only " + std::to_string(r.n_rings) + " populated rings (min_rings " +
-				std::to_string(opt_.features.min_rings) + ")");
+		return skip(r, "only " + std::to_string(r.n_rings) + " populated rings (min_rings " + std::to_string(opt_.features.min_rings) + ")");
 
 	FeatureSet raw = std::move(scan.features);
 	r.n_sharp = raw.sharp.size();

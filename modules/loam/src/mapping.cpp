@@ -72,7 +72,7 @@ bool ScanToMap::fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMat
 		const int m = plane_map_.knn(q, kWide, max_d, nn, tag);
 		if (others(m) < 2) return false;
 		Eigen::Vector3f sel[32];
-		
+
 		int n = 0, n_other = 0;
 		for (int i = 0; i < m && n_other < k / 2; ++i)
 			if (tag[i] != tag[0]) sel[n++] = nn[i], ++n_other;

@@ -11,7 +11,9 @@ namespace
 {
 RobustWeight robustWeight(const SolverOptions& o)
 {
-	return RobustWeight(o.loss == "huber" ? RobustWeight::Huber : o.loss == "cauchy" ? RobustWeight::Cauchy : RobustWeight::None, o.loss_scale);
+	return RobustWeight(o.loss == "huber" ? RobustWeight::Huber : o.loss == "cauchy" ? RobustWeight::Cauchy
+																					 : RobustWeight::None,
+		o.loss_scale);
 }
 
 Eigen::Vector3d edgeResidual(const EdgeMatch& e, const Eigen::Isometry3d& T)

@@ -111,8 +111,10 @@ void RingModelCheck::observe(const PointCloud& scan)
 	const int n = quantile(rings, 0.5);
 	const bool fewer = e.from_ids ? 2 * n <= model_rings_ : quantile(spacing, 0.5) >= 2 * model_spacing_deg_;
 	if (2 * n >= 3 * model_rings_ || fewer)
-		failInput(ini_, "[loam.scan] ring model " + model_ + " (" + std::to_string(model_rings_) +
+		failInput(ini_,
+			"[loam.scan] ring model " + model_ + " (" + std::to_string(model_rings_) +
 				" rings) but the scans have " + std::to_string(n) + " rings (" +
-				(e.from_ids ? "their ring ids" : "beams counted per azimuth column") + "): " + ringModelAdvice(n));
+				(e.from_ids ? "their ring ids" : "beams counted per azimuth column") + "): " +
+				ringModelAdvice(n));
 }
 }  // namespace vlo::loam

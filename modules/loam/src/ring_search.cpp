@@ -12,7 +12,7 @@ namespace
 {
 constexpr float kPi = 3.14159265f;
 constexpr float kAtanError = 1e-4f;  // more than fastAtan2's, twice
-}
+}  // namespace
 
 RingSearch::Query::Query(const Eigen::Vector3f& q)
 	: p(q), az(fastAtan2(q.y(), q.x())), elevation(fastAtan2(q.z(), std::sqrt(q.x() * q.x() + q.y() * q.y()))), range(q.norm())

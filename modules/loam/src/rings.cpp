@@ -108,7 +108,8 @@ RingScan ScanPreprocessor::process(const PointCloud& scan)
 			++out.n_out_of_range;
 			continue;
 		}
-		const int ring = !out.rings_from_data ? model_.ringOf(lp.z, std::sqrt(rho2)) : lp.ring < n_rings ? lp.ring : -1;
+		const int ring = !out.rings_from_data ? model_.ringOf(lp.z, std::sqrt(rho2)) : lp.ring < n_rings ? lp.ring
+																										 : -1;
 		if (ring < 0)
 		{
 			++out.n_out_of_fov;

@@ -18,7 +18,7 @@ Eigen::Isometry3d motion(double x, double y, double z, double yaw_deg, double pi
 	const double k = M_PI / 180;
 	T.linear() = (Eigen::AngleAxisd(yaw_deg * k, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch_deg * k, Eigen::Vector3d::UnitY()) *
 		Eigen::AngleAxisd(roll_deg * k, Eigen::Vector3d::UnitX()))
-					.toRotationMatrix();
+					 .toRotationMatrix();
 	T.translation() = Eigen::Vector3d(x, y, z);
 	return T;
 }

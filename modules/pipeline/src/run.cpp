@@ -45,7 +45,7 @@ void checkOutputDir(const std::string& dir)
 {
 	const std::string frames = s.frames == 1 ? "the 1 frame, frame " + std::to_string(s.last_frame) + ", is"
 											 : "the " + std::to_string(s.frames) + " frames up to frame " +
-				std::to_string(s.last_frame) + " are";
+			std::to_string(s.last_frame) + " are";
 	const std::string kept = frames + " kept in " + out + " (summary.json: \"complete\": false)";
 	try
 	{
@@ -156,7 +156,8 @@ RunSummary runPipeline(const RunRequest& req)
 	if (stop && (outputs.table.rows() == 0 || noTrajectory)) std::rethrow_exception(stop);  // nothing to keep
 	if (outputs.table.rows() == 0) failInput(req.rawlog, "no frame to process");
 	if (noTrajectory)
-		failInput(req.rawlog, "the visual odometry never initialised in " + std::to_string(outputs.table.rows()) +
+		failInput(req.rawlog,
+			"the visual odometry never initialised in " + std::to_string(outputs.table.rows()) +
 				" frames: no trajectory to write (too few frames, or too little texture or motion)");
 
 	if (stages.motion) outputs.setMotion(*stages.motion);
@@ -194,7 +195,8 @@ RunSummary runPipeline(const RunRequest& req)
 	std::snprintf(wall, sizeof(wall), "\nwall time per frame: %.2f ms with %d thread%s (ms_total: each frame's own time in its stages%s)",
 		summary.ms_per_frame, popt.threadCount(), popt.threadCount() > 1 ? "s" : "",
 		popt.threadCount() > 1 ? ", which overlap with other frames'" : "");
-	logger().logStr(mrpt::system::LVL_INFO, "time per stage over " + std::to_string(summary.frames) + " frames (frames.csv):\n" +
+	logger().logStr(mrpt::system::LVL_INFO,
+		"time per stage over " + std::to_string(summary.frames) + " frames (frames.csv):\n" +
 			formatStageTimings(summary.stage_timings) + wall);
 	if (stop) throwStoppedEarly(stop, summary, req.out);
 	return summary;

@@ -84,7 +84,8 @@ std::string runReportMarkdown(const RunSummary& s, const RunRequest& req, const 
 	for (const auto& [key, value] : s.figures) o << "| " << key << " | " << value << " |\n";
 	for (const char* f : {"summary.json", "frames.csv", "run.ini", "map.pcd"})
 		if (has(files, f)) o << "| " << f << " | [" << f << "](" << f << ") |\n";
-	if (!req.gt.empty()) o << "\n## Accuracy against the ground truth\n\n" << accuracy;
+	if (!req.gt.empty()) o << "\n## Accuracy against the ground truth\n\n"
+						   << accuracy;
 	if (!s.stage_timings.empty())
 	{
 		o << "\n## Time per stage\n\n";

@@ -374,7 +374,8 @@ TEST_F(RunLoop, OneAndTwoThreadsGiveTheSameOutputs)
 				std::string cells;
 				for (const auto& c : column(out("frames.csv"), name)) cells += c + ",";
 				return cells;
-			}() + "\n";
+			}() +
+				"\n";
 		csv.push_back(text);
 	}
 	EXPECT_EQ(csv[0], csv[1]);
@@ -388,15 +389,18 @@ TEST_F(RunLoop, AFailingModuleStopsTheRunWithItsErrorWhateverTheThreads)
 		const std::string t = std::string("pipeline.threads=") + threads;
 		std::filesystem::remove_all(out(""));
 		EXPECT_NE(runError({"pipeline.mode=vlo", t, "pipeline.lidar_odometry=failing_lidar"}).find("fails at frame 3"),
-			std::string::npos) << threads;
+			std::string::npos)
+			<< threads;
 		EXPECT_NE(runError({"pipeline.mode=vlo", t, "pipeline.visual_odometry=failing_mono"}).find("fails at frame 4"),
-			std::string::npos) << threads;
+			std::string::npos)
+			<< threads;
 		// Both: the LiDAR odometry of frame 3 fails first, as in a serial run, though with two threads the
 		// motion source of frame 4 fails at the same time.
 		EXPECT_NE(runError({"pipeline.mode=vlo", t, "pipeline.lidar_odometry=failing_lidar",
-					  "pipeline.visual_odometry=failing_mono"})
+							   "pipeline.visual_odometry=failing_mono"})
 					  .find("fails at frame 3"),
-			std::string::npos) << threads;
+			std::string::npos)
+			<< threads;
 		EXPECT_NE(runError({"pipeline.mode=vlo", t, "pipeline.threads=3"}).find("threads"), std::string::npos);
 		EXPECT_FALSE(std::filesystem::exists(out("frames.csv")));
 	}

@@ -99,8 +99,7 @@ class Walker
 
 	[[noreturn]] void fail(std::uint64_t pos, const char* where, const std::string& what) const
 	{
-		failInput(path_, std::string("not a readable ROS 1 bag (truncated or corrupt?): ") + where + " at byte " +
-				std::to_string(pos) + ": " + what);
+		failInput(path_, std::string("not a readable ROS 1 bag (truncated or corrupt?): ") + where + " at byte " + std::to_string(pos) + ": " + what);
 	}
 
    private:

@@ -39,8 +39,10 @@ mrpt::img::CImage decodeImage(const sensor_msgs::Image& msg, const std::string& 
 	const int rows = static_cast<int>(msg.height), cols = static_cast<int>(msg.width);
 	const std::size_t row_bytes = std::size_t(cols) * CV_ELEM_SIZE(enc.cv_type);
 	if (rows <= 0 || cols <= 0 || msg.step < row_bytes || std::size_t(msg.step) * rows > msg.data.size())
-		failInput(where, "image of " + std::to_string(cols) + "x" + std::to_string(rows) + " " + msg.encoding +
-				", step " + std::to_string(msg.step) + " does not fit its " + std::to_string(msg.data.size()) + " bytes");
+		failInput(where,
+			"image of " + std::to_string(cols) + "x" + std::to_string(rows) + " " + msg.encoding +
+				", step " + std::to_string(msg.step) + " does not fit its " +
+				std::to_string(msg.data.size()) + " bytes");
 	const cv::Mat in(rows, cols, enc.cv_type, const_cast<std::uint8_t*>(msg.data.data()), msg.step);
 	cv::Mat gray;
 	if (enc.cv_type == CV_16UC1)

@@ -90,7 +90,8 @@ class Layout
 				if (size == 0)
 					failInput(where_, "PointCloud2 field '" + f.name + "' has unknown datatype " + std::to_string(f.datatype));
 				if (f.offset + size > msg_.point_step)
-					failInput(where_, "PointCloud2 field '" + f.name + "' at offset " + std::to_string(f.offset) +
+					failInput(where_,
+						"PointCloud2 field '" + f.name + "' at offset " + std::to_string(f.offset) +
 							" does not fit point_step " + std::to_string(msg_.point_step));
 				if (found) *found = name;
 				return FieldReader{f.offset, f.datatype, msg_.is_bigendian != host_big};
@@ -121,7 +122,8 @@ io::ScanReading decodePointCloud2(const sensor_msgs::PointCloud2& msg, const std
 
 	const std::size_t w = msg.width, h = msg.height, step = msg.point_step;
 	if (step == 0 || w * step > msg.row_step || h * std::size_t(msg.row_step) > msg.data.size())
-		failInput(where, "PointCloud2 of " + std::to_string(w) + "x" + std::to_string(h) + " points, point_step " +
+		failInput(where,
+			"PointCloud2 of " + std::to_string(w) + "x" + std::to_string(h) + " points, point_step " +
 				std::to_string(step) + ", row_step " + std::to_string(msg.row_step) + " does not fit its " +
 				std::to_string(msg.data.size()) + " bytes");
 

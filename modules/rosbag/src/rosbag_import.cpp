@@ -54,7 +54,8 @@ std::string cameraInfoTopicFor(const BagSet& bags, const std::string& image_topi
 		tried += (tried.empty() ? "" : ", ") + candidate;
 		if (ns.empty()) break;
 	}
-	failInput(bags.name(), "no CameraInfo topic next to " + image_topic + " (tried " + tried +
+	failInput(bags.name(),
+		"no CameraInfo topic next to " + image_topic + " (tried " + tried +
 			"): give --camera-info-topic TOPIC or --camera-info FILE.yaml");
 }
 
@@ -192,7 +193,8 @@ Placement placeSensors(const BagSet& bags, const RosbagImport& opt, const std::s
 	}
 	const auto l_T_c = p.tree.lookup(lidar_frame, camera_frame);
 	if (!l_T_c)
-		failInput(bags.name(), "no transform between the LiDAR frame '" + lidar_frame + "' and the camera frame '" + camera_frame +
+		failInput(bags.name(),
+			"no transform between the LiDAR frame '" + lidar_frame + "' and the camera frame '" + camera_frame +
 				"' in /tf_static or unchanging /tf; " + kTfHint);
 	p.vehicle_T_camera = p.vehicle_T_lidar * *l_T_c;
 	return p;
@@ -243,8 +245,10 @@ class MessageDecoder
 			f.rig.camera = cam;
 		}
 		if (static_cast<int>(f.image.getWidth()) != cam.width || static_cast<int>(f.image.getHeight()) != cam.height)
-			failInput(where, "image of " + std::to_string(f.image.getWidth()) + "x" + std::to_string(f.image.getHeight()) +
-					" but CameraInfo says " + std::to_string(cam.width) + "x" + std::to_string(cam.height));
+			failInput(where,
+				"image of " + std::to_string(f.image.getWidth()) + "x" +
+					std::to_string(f.image.getHeight()) + " but CameraInfo says " +
+					std::to_string(cam.width) + "x" + std::to_string(cam.height));
 		f.has_image = true;
 		return {0, std::move(f)};
 	}

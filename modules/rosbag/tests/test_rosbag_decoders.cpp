@@ -17,8 +17,11 @@ namespace
 {
 using sensor_msgs::PointField;
 
-/// A cloud of `n` points with the given fields (name, offset, type), filled by put(point, field, bytes).
-sensor_msgs::PointCloud2 cloud(std::size_t n, std::uint32_t step, const std::vector<std::tuple<std::string, std::uint32_t, std::uint8_t>>& fields)
+/// A field's name, offset and type.
+using Fields = std::vector<std::tuple<std::string, std::uint32_t, std::uint8_t>>;
+
+/// A cloud of `n` points with the given fields, filled by put(point, field, bytes).
+sensor_msgs::PointCloud2 cloud(std::size_t n, std::uint32_t step, const Fields& fields)
 {
 	sensor_msgs::PointCloud2 pc;
 	pc.header.stamp = ros::Time(1000.5);
@@ -41,9 +44,10 @@ void put(sensor_msgs::PointCloud2& pc, std::size_t i, std::uint32_t off, V v)
 TEST(PointCloud2, OusterLayoutRingAndNanosecondTime)
 {
 	// Ouster: x y z (float32) at 0 4 8, intensity float32 at 16, t uint32 ns at 20, reflectivity uint16 at 24, ring uint16 at 26.
-	auto pc = cloud(3, 48, {{"x", 0, PointField::FLOAT32}, {"y", 4, PointField::FLOAT32}, {"z", 8, PointField::FLOAT32},
-							   {"intensity", 16, PointField::FLOAT32}, {"t", 20, PointField::UINT32},
-							   {"reflectivity", 24, PointField::UINT16}, {"ring", 26, PointField::UINT16}});
+	const Fields fields{{"x", 0, PointField::FLOAT32}, {"y", 4, PointField::FLOAT32},
+		{"z", 8, PointField::FLOAT32}, {"intensity", 16, PointField::FLOAT32}, {"t", 20, PointField::UINT32},
+		{"reflectivity", 24, PointField::UINT16}, {"ring", 26, PointField::UINT16}};
+	auto pc = cloud(3, 48, fields);
 	// Top-down rings (Ouster's 0 is the highest beam): point i has elevation going down with i.
 	for (std::size_t i = 0; i < 3; ++i)
 	{
@@ -64,8 +68,9 @@ TEST(PointCloud2, OusterLayoutRingAndNanosecondTime)
 TEST(PointCloud2, AbsoluteTimestampDoubleAndReflectivity)
 {
 	// Hesai-like: x y z float64, reflectivity uint8, timestamp float64 absolute seconds.
-	auto pc = cloud(2, 40, {{"x", 0, PointField::FLOAT64}, {"y", 8, PointField::FLOAT64}, {"z", 16, PointField::FLOAT64},
-							   {"reflectivity", 24, PointField::UINT8}, {"timestamp", 32, PointField::FLOAT64}});
+	const Fields fields{{"x", 0, PointField::FLOAT64}, {"y", 8, PointField::FLOAT64},
+		{"z", 16, PointField::FLOAT64}, {"reflectivity", 24, PointField::UINT8}, {"timestamp", 32, PointField::FLOAT64}};
+	auto pc = cloud(2, 40, fields);
 	for (std::size_t i = 0; i < 2; ++i)
 		put(pc, i, 0, 1.5 * i), put(pc, i, 8, -2.0), put(pc, i, 16, 0.25), put(pc, i, 24, std::uint8_t(200)),
 			put(pc, i, 32, 1000.5 - 0.1 + 0.06 * i);

@@ -9,7 +9,7 @@ namespace
 // Legend order: what matters most first (an image too narrow for the legend drops its last items).
 constexpr std::array<Stage, 6> kLegendOrder = {
 	Stage::None, Stage::Ransac, Stage::Epipolar, Stage::Gradient, Stage::Triangulation, Stage::Tracking};
-}
+}  // namespace
 
 viz::Rgb stageColor(Stage s)
 {

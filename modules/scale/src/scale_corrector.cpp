@@ -23,7 +23,8 @@ const cv::Mat& checkedGrey(const cv::Mat& m, const PinholeCamera& cam, const cha
 	if (m.depth() != CV_8U || m.channels() != 1)
 		failInput(where, "is not 8-bit grey (" + std::to_string(m.channels()) + " channels)");
 	if (m.cols != cam.width || m.rows != cam.height)
-		failInput(where, "is " + std::to_string(m.cols) + "x" + std::to_string(m.rows) + " but the camera is " +
+		failInput(where,
+			"is " + std::to_string(m.cols) + "x" + std::to_string(m.rows) + " but the camera is " +
 				std::to_string(cam.width) + "x" + std::to_string(cam.height));
 	return m;
 }

@@ -113,7 +113,8 @@ Traffic::Traffic(const Road& road, const VehicleMotion& ego, double duration, in
 	for (int i = 0; i < oncoming; ++i)
 	{
 		const double k = rng.uniform();
-		const VehicleKind kind = k < 0.6 ? VehicleKind::Car : k < 0.85 ? VehicleKind::Van : VehicleKind::Truck;
+		const VehicleKind kind = k < 0.6 ? VehicleKind::Car : k < 0.85 ? VehicleKind::Van
+																	   : VehicleKind::Truck;
 		Vehicle v = shaped(kind, rng.integer(0, vehicle_tex::kPaints - 1));
 		v.s0 = onStart[i], v.speed = speeds[i], v.direction = -1;
 		vehicles_.push_back(v);

@@ -89,7 +89,8 @@ int World::shadedVariant(int tex, const Eigen::Vector3d& normal)
 	// its own texture unit (192 in llvmpipe, never released).
 	static const Eigen::Vector3d sun = Eigen::Vector3d(-0.45, 0.3, 0.84).normalized();
 	const double light = 0.55 + 0.45 * std::max(0.0, normal.normalized().dot(sun));
-	const int level = light >= 0.86 ? 0 : light >= 0.7 ? 1 : 2;
+	const int level = light >= 0.86 ? 0 : light >= 0.7 ? 1
+													   : 2;
 	if (level == 0) return tex;
 	const auto key = std::make_pair(tex, level);
 	const auto it = variants_.find(key);

@@ -77,8 +77,9 @@ TEST(Traffic, VehiclesKeepToTheRoadAtTheirSpeedAndNeverTouch)
 			const Eigen::Vector3d left(-std::sin(st->heading), std::cos(st->heading), 0);
 			const double lat = left.dot(p.translation() - st->p);
 			EXPECT_LE(std::abs(lat) + v.width / 2, 3.6) << "vehicle " << i << " t " << t;
-			EXPECT_NEAR(p.translation().z(), sc->road.at(st->s).p.z() + st->grade * (p.translation() - st->p).head<2>().dot(
-				Eigen::Vector2d(std::cos(st->heading), std::sin(st->heading))), 0.05);
+			const Eigen::Vector2d along(std::cos(st->heading), std::sin(st->heading));
+			const double ahead = (p.translation() - st->p).head<2>().dot(along);
+			EXPECT_NEAR(p.translation().z(), sc->road.at(st->s).p.z() + st->grade * ahead, 0.05);
 			// Its own speed, in its own direction (forward along its x axis).
 			const Eigen::Vector3d step = q.translation() - p.translation();
 			EXPECT_NEAR(step.norm() / 0.1, v.speed, 0.08 * v.speed) << "vehicle " << i << " t " << t;

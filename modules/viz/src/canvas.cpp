@@ -14,7 +14,9 @@ double niceStep(double approx)
 	if (!(approx > 0) || !std::isfinite(approx)) return 1.0;
 	const double p = std::pow(10.0, std::floor(std::log10(approx)));
 	const double m = approx / p;  // in [1, 10)
-	return p * (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10);
+	return p * (m < 1.5 ? 1 : m < 3.5 ? 2
+					   : m < 7.5      ? 5
+									  : 10);
 }
 }  // namespace vlo::viz
 
@@ -35,8 +37,10 @@ void text(cv::Mat& img, const std::string& s, cv::Point at, double scale, cv::Sc
 	int thickness)
 {
 	const cv::Size sz = textSize(s, scale, thickness);
-	const int x = h == HAlign::Left ? at.x : h == HAlign::Center ? at.x - sz.width / 2 : at.x - sz.width;
-	const int y = v == VAlign::Bottom ? at.y : v == VAlign::Middle ? at.y + sz.height / 2 : at.y + sz.height;
+	const int x = h == HAlign::Left ? at.x : h == HAlign::Center ? at.x - sz.width / 2
+																 : at.x - sz.width;
+	const int y = v == VAlign::Bottom ? at.y : v == VAlign::Middle ? at.y + sz.height / 2
+																   : at.y + sz.height;
 	cv::putText(img, hersheyText(s), {x, y}, kFont, scale, color, thickness, cv::LINE_AA);
 }
 

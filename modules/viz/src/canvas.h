@@ -15,8 +15,18 @@ namespace vlo::viz::canvas
 inline cv::Scalar bgr(Rgb c) { return {double(c.b), double(c.g), double(c.r)}; }
 const cv::Scalar kInk{40, 40, 40}, kGrid{228, 228, 228}, kWhite{255, 255, 255};
 
-enum class HAlign { Left, Center, Right };
-enum class VAlign { Top, Middle, Bottom };
+enum class HAlign
+{
+	Left,
+	Center,
+	Right
+};
+enum class VAlign
+{
+	Top,
+	Middle,
+	Bottom
+};
 /// Font sizes: ticks and legend text, axis labels, titles.
 constexpr double kSmall = 0.5, kMedium = 0.6, kLarge = 0.8;
 
@@ -38,7 +48,14 @@ void axes(cv::Mat& img, const PlotArea& a, double xstep, double ystep, const std
 
 struct LegendItem
 {
-	enum Kind { Line, Dot, Square, Ring, Diamond } kind = Line;
+	enum Kind
+	{
+		Line,
+		Dot,
+		Square,
+		Ring,
+		Diamond
+	} kind = Line;
 	std::string label;
 	Rgb color;
 	int thickness = 2;

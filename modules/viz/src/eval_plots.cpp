@@ -16,8 +16,16 @@ namespace
 {
 constexpr double kKmhPerMs = 3.6;
 
-enum class Error { Translation, Rotation };
-enum class Axis { Length, Speed };
+enum class Error
+{
+	Translation,
+	Rotation
+};
+enum class Axis
+{
+	Length,
+	Speed
+};
 
 PlotSpec devkitPlot(const std::vector<EvalRun>& runs, const std::vector<eval::KittiCurves>& curves, Error e, Axis x)
 {

@@ -36,12 +36,16 @@ std::string hersheyText(const std::string& utf8)
 			++i;
 			continue;
 		}
-		const int n = b >= 0xF0 ? 4 : b >= 0xE0 ? 3 : b >= 0xC0 ? 2 : 1;  // a stray byte counts as one character
+		const int n = b >= 0xF0 ? 4 : b >= 0xE0 ? 3
+			: b >= 0xC0                         ? 2
+												: 1;  // a stray byte counts as one character
 		std::uint32_t c = n == 1 ? b : b & (0x7F >> n);
 		for (int k = 1; k < n && i + k < utf8.size(); ++k) c = (c << 6) | (static_cast<unsigned char>(utf8[i + k]) & 0x3F);
 		i += n;
 		const std::string latin = latinLetter(c);
-		out += c == 0xB0 ? "deg" : c == 0xB5 ? "u" : !latin.empty() ? latin : "?";
+		out += c == 0xB0 ? "deg" : c == 0xB5 ? "u"
+			: !latin.empty()                 ? latin
+											 : "?";
 	}
 	return out;
 }

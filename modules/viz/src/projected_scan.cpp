@@ -97,7 +97,8 @@ void panel(cv::Mat& out, int top, double maxDepth, const ImageOverlay& overlay, 
 	// Title and detail beside the colour bar; a long title first drops the detail, then shrinks.
 	const int room = out.cols - kPanelPad - besideBar(out.cols);
 	const auto fits = [&](const std::string& s, double size) { return canvas::textSize(s, size).width <= room; };
-	const std::string both = title.empty() ? detail : detail.empty() ? title : title + "   " + detail;
+	const std::string both = title.empty() ? detail : detail.empty() ? title
+																	 : title + "   " + detail;
 	const std::string info = fits(both, canvas::kMedium) || title.empty() ? both : title;
 	const double size = fits(info, canvas::kMedium) ? canvas::kMedium : canvas::kSmall;
 	canvas::text(out, info, {out.cols - kPanelPad, top + 19}, size, canvas::kInk, canvas::HAlign::Right,
@@ -137,7 +138,8 @@ cv::Mat drawProjectedScan(const mrpt::img::CImage& image, const PointCloud& scan
 	if (!rig.has_camera || !rig.camera.valid()) failInput("projected scan", "the sensor rig has no valid camera");
 	const cv::Mat img = toBgr(image);
 	if (img.cols != rig.camera.width || img.rows != rig.camera.height)
-		failInput("projected scan", "image is " + std::to_string(img.cols) + "x" + std::to_string(img.rows) +
+		failInput("projected scan",
+			"image is " + std::to_string(img.cols) + "x" + std::to_string(img.rows) +
 				" but the camera intrinsics are for " + std::to_string(rig.camera.width) + "x" +
 				std::to_string(rig.camera.height));
 	const LegendLayout layout = layoutLegend(overlay, img.cols);
@@ -151,7 +153,8 @@ cv::Mat drawProjectedScan(const mrpt::img::CImage& image, const PointCloud& scan
 	const double maxDepth = style.max_depth > 0 ? style.max_depth : autoMaxDepth(depths);
 	// Far first, so that near points (which occlude far ones in reality) end up on top.
 	std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.depth > b.depth; });
-	const int radius = style.point_radius > 0 ? style.point_radius : pts.size() > 8000 ? 1 : 2;
+	const int radius = style.point_radius > 0 ? style.point_radius : pts.size() > 8000 ? 1
+																					   : 2;
 	for (const auto& p : pts)
 		cv::circle(top, canvas::round(p.px), radius, canvas::bgr(turbo(p.depth / maxDepth)), cv::FILLED, cv::LINE_8);
 	for (const auto& s : overlay.segments)
@@ -161,7 +164,8 @@ cv::Mat drawProjectedScan(const mrpt::img::CImage& image, const PointCloud& scan
 			cv::LINE_AA);
 
 	const std::string detail = style.show_scan ? std::to_string(pts.size()) + " of " + std::to_string(scan.size()) +
-			" LiDAR points in view" : "";
+			" LiDAR points in view"
+											   : "";
 	panel(out, img.rows, maxDepth, overlay, layout, style.title, detail);
 	return out;
 }

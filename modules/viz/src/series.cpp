@@ -66,7 +66,8 @@ PlotArea seriesArea(const std::vector<Series>& series, const SeriesStyle& style)
 	for (const auto& s : series)
 	{
 		if (s.x.size() != s.y.size())
-			failInput("series plot", "series '" + s.name + "' has " + std::to_string(s.x.size()) + " x values but " +
+			failInput("series plot",
+				"series '" + s.name + "' has " + std::to_string(s.x.size()) + " x values but " +
 					std::to_string(s.y.size()) + " y values");
 		for (size_t i = 0; i < s.x.size(); ++i)
 			if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))

@@ -47,7 +47,8 @@ double largestValue(const std::vector<NamedTrajectory>& trajs, const std::vector
 {
 	if (values.empty()) return -1;
 	if (trajs.empty() || values.size() != trajs[0].traj.size())
-		failInput("top-down view", std::to_string(values.size()) + " values for " +
+		failInput("top-down view",
+			std::to_string(values.size()) + " values for " +
 				std::to_string(trajs.empty() ? 0 : trajs[0].traj.size()) + " poses of the first trajectory");
 	double vmax = 0;
 	for (const double v : values)

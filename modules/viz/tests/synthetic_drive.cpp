@@ -30,7 +30,8 @@ Trajectory curvedDrive(double length)
 		StampedPose p;
 		p.t = 1000 + t;
 		p.pose.linear() = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
-			Eigen::AngleAxisd(-std::atan(slope), Eigen::Vector3d::UnitY())).toRotationMatrix();
+			Eigen::AngleAxisd(-std::atan(slope), Eigen::Vector3d::UnitY()))
+							  .toRotationMatrix();
 		p.pose.translation() = Eigen::Vector3d(x, y, height(s));
 		out.push_back(p);
 		const double v = 9.5 + 4.5 * std::sin(t / 17);  // 5..14 m/s

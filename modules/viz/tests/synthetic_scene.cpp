@@ -69,7 +69,8 @@ double shade(const Hit& h)
 		if (std::abs(y) < 0.08 && std::fmod(std::abs(x), 6) < 3) return 225;
 		return 80 + 25 * hash(int(std::floor(x * 8)), int(std::floor(y * 8)));
 	}
-	const double light = h.n.z() > 0.5 ? 1.15 : std::abs(h.n.x()) > 0.5 ? 0.85 : 1.0;
+	const double light = h.n.z() > 0.5 ? 1.15 : std::abs(h.n.x()) > 0.5 ? 0.85
+																		: 1.0;
 	const double a = std::abs(h.n.x()) > 0.5 ? h.p.y() : h.p.x(), z = h.p.z();
 	const int tex = kBoxes[h.box].tex;
 	if (tex == 1) return light * (z > 0.9 ? 45 : 110 + 40 * (h.box % 2));

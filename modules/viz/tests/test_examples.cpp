@@ -193,7 +193,8 @@ TEST_F(Example, ProjectedScanWithKeypointOverlay)
 	for (size_t k = 0; k < proj.size(); k += 97)
 	{
 		const int stage = int(rng() % 3);
-		const Rgb c = stage == 0 ? kept : stage == 1 ? epi : grad;
+		const Rgb c = stage == 0 ? kept : stage == 1 ? epi
+													 : grad;
 		const cv::Point2d to = proj[k].px + cv::Point2d(8.0 * (proj[k].px.x - 607) / 600, 4.0);
 		ov.segments.push_back({proj[k].px, to, c, 1});
 		ov.points.push_back({to, c, 4, false});

@@ -48,7 +48,7 @@ InitResult MapInitializer::feed(const TrackedFrame& f)
 	if (r.matches < opt_.min_matches)
 	{
 		r.reason = "too few matches with the reference (" + std::to_string(r.matches) + " < " +
-				   std::to_string(opt_.min_matches) + "): new reference";
+			std::to_string(opt_.min_matches) + "): new reference";
 		setReference(f);
 		return r;
 	}
@@ -90,7 +90,7 @@ InitResult MapInitializer::buildMap(const TrackedFrame& cur, const TwoViewResult
 	{
 		r.map.reset();
 		r.reason = std::string(1, tv.model) + ": " + std::to_string(tracked) + " points after two-view BA (< " +
-				   std::to_string(opt_.min_tracked_after_ba) + ")";
+			std::to_string(opt_.min_tracked_after_ba) + ")";
 		return r;
 	}
 	// Unit median depth: the arbitrary monocular scale, made the same at every initialisation.

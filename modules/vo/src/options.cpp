@@ -89,7 +89,7 @@ void MappingOptions::declare(OptionTable& t)
 	t.add("ba_refine_iterations", ba_refine_iterations, ">= 0", "second pass without outliers");
 	t.add("max_ba_keyframes", max_ba_keyframes, ">= 2", "optimised keyframes in the local window");
 	t.add("mapping_delay", mapping_delay, "[0, 3]", "keyframe k's local BA enters the map at frame k + this (0: inline); with one thread "
-		"its robust pass runs at frame k + 1, its refine pass at k + this");
+													"its robust pass runs at frame k + 1, its refine pass at k + this");
 	t.add("min_covisibility", min_covisibility, ">= 1", "shared points for a covisibility edge");
 	t.add("redundant_ratio", redundant_ratio, "(0, 1]", "keyframe culled when this fraction of its points ...");
 	t.add("redundant_observers", redundant_observers, ">= 1", "... is seen by this many other keyframes");

@@ -69,7 +69,7 @@ std::vector<cv::KeyPoint> OrbExtractor::detectSpread(const cv::Mat& im, int leve
 	const std::vector<cv::KeyPoint> kps = detail::detectFast(im(cv::Rect(border, border, w, h)), opt_.fallback_cell,
 		opt_.fast_threshold, opt_.fast_min_threshold);
 	std::vector<cv::KeyPoint> chosen = opt_.detector == "quadtree" ? detail::distributeQuadtree(kps, w, h, want)
-																	: detail::distributeAnms(kps, w, h, want, opt_.anms_pool);
+																   : detail::distributeAnms(kps, w, h, want, opt_.anms_pool);
 	for (auto& k : chosen)
 	{
 		k.pt += cv::Point2f(float(border), float(border));

@@ -88,7 +88,7 @@ int optimizePose(TrackedFrame& f, const PinholeCamera& cam, const ScalePyramid& 
 			const cv::KeyPoint& k = f.feat->keys[i];
 			const Vec3 Xc = T * f.points[i]->pos;
 			const double e2 = Xc.z() > 0 ? (project(cam, Xc) - Vec2(k.pt.x, k.pt.y)).squaredNorm() *
-											   pyr.inv_sigma2[static_cast<std::size_t>(k.octave)]
+					pyr.inv_sigma2[static_cast<std::size_t>(k.octave)]
 										 : 1e18;
 			f.outlier[i] = e2 > chi2 ? 1 : 0;
 			if (!f.outlier[i]) ++inliers;

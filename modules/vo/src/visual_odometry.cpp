@@ -133,7 +133,7 @@ bool VisualOdometry::Impl::track(TrackedFrame& cur, VoFrameInfo& inf)
 	if (inliers < opt.tracking.min_local_inliers)
 	{
 		inf.reason = "local map: " + std::to_string(inliers) + " inliers (< " +
-					 std::to_string(opt.tracking.min_local_inliers) + ")";
+			std::to_string(opt.tracking.min_local_inliers) + ")";
 		return false;
 	}
 	cur.has_pose = true;

@@ -109,7 +109,7 @@ Eigen::Isometry3d drivePose(int k, double speed)
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 	const double yaw = 0.06 * std::sin(s / 9.0);  // about the vertical (y) axis
 	T.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitY()).toRotationMatrix() *
-				 Eigen::AngleAxisd(0.01 * std::sin(s / 5.0), Eigen::Vector3d::UnitX()).toRotationMatrix();
+		Eigen::AngleAxisd(0.01 * std::sin(s / 5.0), Eigen::Vector3d::UnitX()).toRotationMatrix();
 	T.translation() = Eigen::Vector3d(1.5 * std::sin(s / 14.0), 0.03 * std::sin(s / 3.0), s);
 	return T;
 }

@@ -92,7 +92,8 @@ TEST(Orb, HammingCountsEveryDifferingBit)
 		{
 			a[i] = static_cast<uint8_t>(rng.uniform(0, 256));
 			// The last trials: complements (256 bits), then copies (0 bits).
-			b[i] = trial == 198 ? static_cast<uint8_t>(~a[i]) : trial == 199 ? a[i] : static_cast<uint8_t>(rng.uniform(0, 256));
+			b[i] = trial == 198 ? static_cast<uint8_t>(~a[i]) : trial == 199 ? a[i]
+																			 : static_cast<uint8_t>(rng.uniform(0, 256));
 		}
 		int bits = 0;
 		for (int i = 0; i < 32; ++i)

@@ -22,10 +22,12 @@ ScaleHistory history()
 	double cum = -1;
 	for (int k = 0; k < 60; ++k)
 	{
-		const double correction = k == 20 ? 1.04 : k == 40 ? 0.97 : 1.0;
+		const double correction = k == 20 ? 1.04 : k == 40 ? 0.97
+														   : 1.0;
 		cum = k == 5 ? 1.0 : cum * correction;
 		const bool none = k < 5 || k == 30 || k == 31;
-		const double rejected = k == 30 ? 1.01 : k == 31 ? 3.0 : NAN;
+		const double rejected = k == 30 ? 1.01 : k == 31 ? 3.0
+														 : NAN;
 		h.add(k, none ? NAN : 1 + 0.03 * std::sin(k / 4.0), none ? 0 : 100 + k, correction, cum, rejected);
 	}
 	return h;
@@ -57,8 +59,8 @@ TEST(ScalePlot, EachValueIsWhereThePanelsPutIt)
 	EXPECT_NEAR(areas[0].toPixel(17, 1).x, areas[1].toPixel(17, 0).x, 1e-9);
 
 	const viz::Rgb rejected = *panels[0].series[0].color, estimate = *panels[0].series[1].color,
-			  cumulative = *panels[0].series[2].color, correction = *panels[0].series[3].color,
-			  inliers = *panels[1].series[0].color;
+				   cumulative = *panels[0].series[2].color, correction = *panels[0].series[3].color,
+				   inliers = *panels[1].series[0].color;
 	EXPECT_TRUE(test::colorNear(img, areas[0].toPixel(30, 1.01), rejected, 0, 10));
 	EXPECT_LT(areas[0].ymax, 1.2);  // the rejected 3.0 does not squash the rest
 	// The cumulative factor as steps: 1 up to frame 20, 1.04 up to 40, then 1.0088 (between the samples, away from
@@ -73,7 +75,8 @@ TEST(ScalePlot, EachValueIsWhereThePanelsPutIt)
 	int dots = 0;
 	for (int k = 6; k < 59; ++k)
 	{
-		const double y = 1 + 0.03 * std::sin(k / 4.0), cum = k < 20 ? 1.0 : k < 40 ? 1.04 : 1.04 * 0.97;
+		const double y = 1 + 0.03 * std::sin(k / 4.0), cum = k < 20 ? 1.0 : k < 40 ? 1.04
+																				   : 1.04 * 0.97;
 		if (k == 30 || k == 31 || std::abs(areas[0].toPixel(k, y).y - areas[0].toPixel(k, cum).y) < 6 || k == 20 || k == 40)
 			continue;
 		EXPECT_TRUE(test::colorNear(img, areas[0].toPixel(k, y), estimate, 0, 10)) << k;

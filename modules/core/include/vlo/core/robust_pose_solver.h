@@ -17,7 +17,12 @@ namespace vlo
 class RobustWeight
 {
    public:
-	enum Kind { None, Huber, Cauchy };
+	enum Kind
+	{
+		None,
+		Huber,
+		Cauchy
+	};
 	RobustWeight(Kind kind, double scale) : kind_(kind), a_(scale), a2_(a_ * a_), inv_a2_(1.0 / a2_) {}
 	double operator()(double s) const
 	{

@@ -74,5 +74,5 @@ Registry<Family>& registry()
 
 /// Registers `Class` (default-constructible, derived from `Family`) under `name`, e.g.
 /// VLO_REGISTER_MODULE(LidarOdometryModule, "aloam", AloamModule). Use once per class, at namespace scope.
-#define VLO_REGISTER_MODULE(Family, name, Class)                                                                     \
+#define VLO_REGISTER_MODULE(Family, name, Class) \
 	[[maybe_unused]] static const bool vlo_registered_##Class = ::vlo::kernel::registry<Family>().add(name, [] { return std::make_unique<Class>(); })

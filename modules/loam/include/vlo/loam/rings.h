@@ -53,7 +53,10 @@ inline float fastAtan2(float y, float x)
 	if (mx == 0.0f) return 0.0f;
 	const float a = mn / mx, s = a * a;
 	float r = (((((-0.01172120f * s + 0.05265332f) * s - 0.11643287f) * s + 0.19354346f) * s -
-				   0.33262347f) * s + 0.99997726f) * a;
+				   0.33262347f) *
+					  s +
+				  0.99997726f) *
+		a;
 	if (ay > ax) r = 1.57079637f - r;
 	if (x < 0) r = 3.14159274f - r;
 	return y < 0 ? -r : r;

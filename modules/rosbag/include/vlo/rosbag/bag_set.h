@@ -55,8 +55,7 @@ template <class M>
 boost::shared_ptr<M> instantiate(const rosbag::MessageInstance& m, const std::string& bag)
 {
 	auto p = m.instantiate<M>();
-	if (!p) failInput(bag, "topic " + m.getTopic() + ": cannot read a " + m.getDataType() + " message as " +
-			ros::message_traits::datatype<M>());
+	if (!p) failInput(bag, "topic " + m.getTopic() + ": cannot read a " + m.getDataType() + " message as " + ros::message_traits::datatype<M>());
 	return p;
 }
 

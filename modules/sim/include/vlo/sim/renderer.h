@@ -13,7 +13,7 @@ namespace mrpt::opengl
 {
 class COpenGLScene;
 class CRenderizable;
-}
+}  // namespace mrpt::opengl
 
 namespace vlo::sim
 {

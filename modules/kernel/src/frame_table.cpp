@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 
 namespace vlo::kernel
 {
@@ -52,11 +53,11 @@ double FrameTable::Cell::number() const
 
 void FrameTable::newRow() { rows_.emplace_back(); }
 
-void FrameTable::setCell(const std::string& column, Cell cell)
+void FrameTable::setCell(std::size_t row, const std::string& column, Cell cell)
 {
 	if (rows_.empty()) newRow();
 	if (std::find(columns_.begin(), columns_.end(), column) == columns_.end()) columns_.push_back(column);
-	rows_.back()[column] = std::move(cell);
+	rows_.at(row)[column] = std::move(cell);
 }
 
 void FrameTable::set(const std::string& column, const std::string& value) { setCell(column, {value}); }
@@ -76,6 +77,15 @@ void FrameTable::setCells(const FrameTable& part)
 	const auto& row = part.rows_.back();
 	for (const auto& c : part.columns_)
 		if (const auto cell = row.find(c); cell != row.end()) setCell(c, cell->second);
+}
+
+void FrameTable::setCellsAt(std::size_t row, const FrameTable& part)
+{
+	if (part.rows_.empty()) return;
+	if (row >= rows_.size()) throw std::out_of_range("frame table: no row " + std::to_string(row));
+	const auto& cells = part.rows_.back();
+	for (const auto& c : part.columns_)
+		if (const auto cell = cells.find(c); cell != cells.end()) setCell(row, c, cell->second);
 }
 
 std::vector<std::string> FrameTable::columns() const

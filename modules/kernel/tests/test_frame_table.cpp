@@ -106,3 +106,26 @@ TEST(FrameTable, SetCellsMergesOneTablePerStageInTheStagesOrder)
 	EXPECT_EQ(merged.cell(1, "vo_late"), "7");
 	EXPECT_EQ(merged.cell(1, "lo_iterations"), "4");
 }
+
+TEST(FrameTable, SetCellsAtFillsAnEarlierRowOnly)
+{
+	FrameTable t;
+	for (long long i = 0; i < 3; ++i)
+	{
+		t.newRow();
+		t.set("frame", i);
+		t.set("lo_points", 100 + i);
+	}
+	FrameTable loop;  // a stage whose result for frame 1 came after frame 2's row
+	loop.set("loop_candidate", 0LL);
+	loop.set("loop_accepted", true);
+	t.setCellsAt(1, loop);
+	EXPECT_EQ(t.cell(1, "loop_candidate"), "0");
+	EXPECT_EQ(t.cell(1, "loop_accepted"), "1");
+	EXPECT_EQ(t.cell(0, "loop_candidate"), "");
+	EXPECT_EQ(t.cell(2, "loop_accepted"), "");
+	EXPECT_EQ(t.cell(2, "lo_points"), "102");  // the rows' own cells untouched
+	EXPECT_THROW(t.setCellsAt(3, loop), std::out_of_range);
+	t.set("lo_points", 7LL);  // set() still writes the last row
+	EXPECT_EQ(t.cell(2, "lo_points"), "7");
+}

@@ -51,8 +51,16 @@ void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOpt
 			pose = stages.lidar->process(
 				done.frame, std::move(done.prepared), plan.bootstrapping ? done.motion : std::nullopt, lidarRow);
 			if (popt.map_every > 0 && done.frame.index % popt.map_every == 0)
-				map.insert(done.frame.scan, *pose * done.frame.rig.vehicle_T_lidar);
+				map.insert(done.frame.scan, *pose * done.frame.rig.vehicle_T_lidar, static_cast<std::uint32_t>(outputs.lidar.size()));
 			lidarMs = done.prepared_ms + msSince(t0);
+		}
+		double loopMs = 0;
+		if (stages.loop && pose)
+		{
+			const auto t0 = SteadyClock::now();
+			stages.loop->addFrame(static_cast<long long>(done.frame.index), done.frame.t, *pose, done.frame.scan,
+				done.frame.rig.vehicle_T_lidar);
+			loopMs = msSince(t0);
 		}
 		auto& table = outputs.table;
 		table.newRow();
@@ -69,7 +77,8 @@ void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOpt
 			table.set("y", pose->translation().y(), 3);
 			table.set("z", pose->translation().z(), 3);
 		}
-		table.set("ms_total", done.ms + lidarMs, 2);
+		if (stages.loop) table.set("ms_loop", loopMs, 2);
+		table.set("ms_total", done.ms + lidarMs + loopMs, 2);
 		if (popt.sample_frame_every > 0 && done.frame.index % popt.sample_frame_every == 0)
 			outputs.addSampleFrame(done.frame);
 		progress.update(table.rows(), frames.progress());

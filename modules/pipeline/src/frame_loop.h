@@ -6,6 +6,7 @@
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/kernel/lidar_odometry.h>
 #include <vlo/kernel/motion_source.h>
+#include <vlo/loop/loop_closure.h>
 #include <vlo/pipeline/global_map.h>
 #include <vlo/pipeline/pipeline_options.h>
 #include <vlo/pipeline/point_times.h>
@@ -27,10 +28,12 @@ struct Stages
 {
 	std::unique_ptr<kernel::MotionSource> motion;
 	std::unique_ptr<kernel::LidarOdometryModule> lidar;
+	std::unique_ptr<loop::LoopClosure> loop;  ///< [pipeline] loop_closure, over the LiDAR odometry
 };
 
 /// Runs the reader's frames (up to [pipeline] max_frames) through the stages: one row of
-/// outputs.table per frame, outputs.lidar, the sample frames, and the scans of map.pcd into `map`.
+/// outputs.table per frame, outputs.lidar, the sample frames, and the scans of map.pcd into `map`
+/// (anchored to their row of outputs.lidar); each pose and scan also to the loop closure when it runs.
 /// Each scan gets its point times ([lidar]) before the LiDAR odometry sees it.
 /// With [pipeline] threads 2 the outputs are the same as with 1 (each module gets the same inputs in
 /// the same order). Returns once every

@@ -24,6 +24,7 @@ void PipelineOptions::declare(OptionTable& t)
 	t.add("sample_frame_every", sample_frame_every, ">= 0", "projected-scan snapshot every N frames (0 = none)");
 	t.add("bootstrapping", bootstrapping, "true | false", "vlo: scale-corrected VO motion as LOAM's initial guess (false = A-LOAM)");
 	t.add("scale_snapshot_every", scale_snapshot_every, ">= 0", "vlo: scale-corrector snapshot every N frames (0 = none)");
+	t.add("loop_closure", loop_closure, "true | false", "lo, vlo: close loops ([loop]): trajectory_slam.tum, map.pcd from its poses");
 	t.add("threads", threads, "1 | 2 | auto", "1 = one thread; 2 = read ahead, and LiDAR odometry up to 3 frames behind the motion source; auto = 2 with 2+ usable cores. Same outputs");
 }
 

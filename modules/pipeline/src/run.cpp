@@ -61,6 +61,23 @@ void checkOutputDir(const std::string& dir)
 	}
 }
 
+/// After the frame loop: the loop closure's last optimisation, its trajectory, loops and map. A failure
+/// there costs the loop-closed outputs, not the odometry's.
+void closeLoops(loop::LoopClosure& closure, RunOutputs& outputs, GlobalMap& map)
+{
+	try
+	{
+		closure.finish();
+		outputs.setLoops(closure);
+		map.correct(outputs.loopCorrections());
+	}
+	catch (const std::exception& e)
+	{
+		outputs.slam.clear();
+		logger().logStr(mrpt::system::LVL_WARN, std::string("loop closure failed, trajectory_slam.tum not written: ") + e.what());
+	}
+}
+
 void prepareOutputDir(const std::string& dir)
 {
 	std::error_code ec;
@@ -89,7 +106,10 @@ Stages makeStages(const PipelineOptions& popt, const RunPlan& plan, kernel::RunC
 	checkOptionsOfAll<kernel::VisualOdometryModule>(config);
 	checkOptionsOfAll<kernel::ScaleCorrectionModule>(config, 0);
 	checkOptionsOfAll<kernel::LidarOdometryModule>(config);
+	loop::LoopOptions loopOptions;
+	config.load(loopOptions, "loop");  // checked in every mode, as the modules' sections
 	Stages s;
+	if (popt.loop_closure && plan.lidar_odometry) s.loop = std::make_unique<loop::LoopClosure>(loopOptions);
 	if (!plan.motion_source.empty())
 	{
 		s.motion = kernel::registry<kernel::MotionSource>().create(plan.motion_source, where("motion_source"));
@@ -161,6 +181,7 @@ RunSummary runPipeline(const RunRequest& req)
 				" frames: no trajectory to write (too few frames, or too little texture or motion)");
 
 	if (stages.motion) outputs.setMotion(*stages.motion);
+	if (stages.loop && !outputs.lidar.empty()) closeLoops(*stages.loop, outputs, globalMap);
 	outputs.map = globalMap.takePoints();
 	outputs.cam0_T_vehicle = cam0_T_vehicle;
 	if (!outputs.cam0_T_vehicle && reader.vehicleTCamera0()) outputs.cam0_T_vehicle = reader.vehicleTCamera0()->inverse();

@@ -8,7 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace vlo::pipeline
 {
@@ -50,6 +52,51 @@ void RunOutputs::setMotion(const kernel::MotionSource& source)
 	figures = source.figures();
 }
 
+void RunOutputs::setLoops(const loop::LoopClosure& closure)
+{
+	slam = closure.corrected();
+	if (slam.size() != lidar.size())
+		throw std::logic_error("loop closure: " + std::to_string(slam.size()) + " corrected poses for " +
+			std::to_string(lidar.size()) + " frames");
+	loops = closure.loops();
+	std::size_t accepted = 0;
+	for (const auto& l : loops)
+	{
+		const auto row = frameRow(l.frame);
+		if (!row) continue;  // a frame after the rows kept (a run stopped early)
+		kernel::FrameTable cells;
+		cells.set("loop_candidate", l.candidate_frame);
+		cells.set("loop_distance", l.descriptor_distance, 3);
+		cells.set("loop_yaw_deg", l.yaw_deg, 1);
+		cells.set("loop_inliers", l.inlier_fraction, 3);
+		cells.set("loop_rms", l.rms, 3);
+		cells.set("loop_accepted", l.accepted);
+		if (!l.accepted) cells.set("loop_rejected", l.reason);
+		table.setCellsAt(*row, cells);
+		accepted += l.accepted;
+	}
+	figures.push_back({"loop_keyframes", static_cast<double>(closure.keyframes())});
+	figures.push_back({"loop_candidates", static_cast<double>(loops.size())});
+	figures.push_back({"loops_accepted", static_cast<double>(accepted)});
+	figures.push_back({"loop_final_optimisation_s", closure.finalOptimisationSeconds()});
+}
+
+std::optional<std::size_t> RunOutputs::frameRow(long long frame) const
+{
+	const std::vector<double> frames = table.numbers("frame");
+	const auto row = std::find(frames.begin(), frames.end(), static_cast<double>(frame));
+	if (row == frames.end()) return std::nullopt;
+	return static_cast<std::size_t>(row - frames.begin());
+}
+
+std::vector<Eigen::Isometry3d> RunOutputs::loopCorrections() const
+{
+	std::vector<Eigen::Isometry3d> c;
+	c.reserve(slam.size());
+	for (std::size_t i = 0; i < slam.size() && i < lidar.size(); ++i) c.push_back(slam[i].pose * lidar[i].pose.inverse());
+	return c;
+}
+
 RunSummary RunOutputs::write(const std::string& dir, const std::string& effectiveIni) const
 {
 	RunSummary s;
@@ -58,6 +105,11 @@ RunSummary RunOutputs::write(const std::string& dir, const std::string& effectiv
 	s.final_trajectory = "trajectory_" + plan.name + ".tum";
 	if (!lidar.empty()) writeTrajectory(dir, plan.name, lidar, cam0_T_vehicle, table.rows());
 	if (!motion.empty()) writeTrajectory(dir, "vo", motion, cam0_T_vehicle, table.rows());
+	if (!slam.empty())
+	{
+		writeTrajectory(dir, "slam", slam, cam0_T_vehicle, table.rows());
+		s.slam_trajectory = "trajectory_slam.tum";
+	}
 	s.path_length_m = pathLength(finalTraj);
 	s.max_step_m = maxStep(finalTraj);
 	s.figures = figures;
@@ -77,7 +129,15 @@ void writeSnapshots(const std::string& dir, const RunOutputs& o, const kernel::M
 	viz::RunSnapshots run;
 	run.mode = o.plan.name;
 	run.frames = o.table.rows();
+	if (!o.slam.empty()) run.trajectories.push_back({"loop-closed (" + o.plan.lidar_label + " + loops)", o.slam, std::nullopt});
 	if (!o.lidar.empty()) run.trajectories.push_back({o.plan.lidar_label, o.lidar, std::nullopt});
+	for (const auto& l : o.loops)
+	{
+		if (!l.accepted) continue;
+		const auto a = o.frameRow(l.candidate_frame), b = o.frameRow(l.frame);
+		if (a && b && *a < o.lidar.size() && *b < o.lidar.size())
+			run.loops.push_back({o.lidar[*a].pose.translation(), o.lidar[*b].pose.translation()});
+	}
 	if (!o.motion.empty()) run.trajectories.push_back({o.motion_label, o.motion, std::nullopt});
 	run.gt_path = gtPath;
 	const std::vector<double> t = o.table.numbers("t");
@@ -107,6 +167,7 @@ void writeSummaryJson(const std::string& path, const RunSummary& s, const RunReq
 		{"last_frame", s.last_frame}, {"frames", s.frames},
 		{"seconds", s.seconds}, {"ms_per_frame", s.ms_per_frame}, {"path_length_m", s.path_length_m},
 		{"max_step_m", s.max_step_m}, {"trajectory", s.final_trajectory}, {"reader", s.reader_stats}};
+	if (!s.slam_trajectory.empty()) j["trajectory_slam"] = s.slam_trajectory;
 	for (const auto& [key, value] : s.figures)
 	{
 		// A module's figures are doubles; whole numbers (counts) are written as integers, as readers expect.

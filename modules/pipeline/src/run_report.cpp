@@ -81,6 +81,8 @@ std::string runReportMarkdown(const RunSummary& s, const RunRequest& req, const 
 	o << "| largest step | " << fixed(s.max_step_m, 3) << " m |\n";
 	if (has(files, s.final_trajectory))
 		o << "| trajectory | [" << s.final_trajectory << "](" << s.final_trajectory << ") |\n";
+	if (!s.slam_trajectory.empty() && has(files, s.slam_trajectory))
+		o << "| loop-closed trajectory | [" << s.slam_trajectory << "](" << s.slam_trajectory << ") |\n";
 	for (const auto& [key, value] : s.figures) o << "| " << key << " | " << value << " |\n";
 	for (const char* f : {"summary.json", "frames.csv", "run.ini", "map.pcd"})
 		if (has(files, f)) o << "| " << f << " | [" << f << "](" << f << ") |\n";

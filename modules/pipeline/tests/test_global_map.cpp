@@ -35,6 +35,47 @@ TEST(GlobalMap, TakePointsHandsTheMapOver)
 	EXPECT_EQ(map.points().size(), 2u);
 }
 
+// Two visits of one wall, the second seen from a pose 0.8 m off (drift): corrected with the second
+// scan's correction, the two copies fall into the same voxels and one is kept.
+TEST(GlobalMap, CorrectMovesEachScanByItsAnchorAndThinsAgain)
+{
+	PointCloud wall;
+	for (int i = 0; i < 20; ++i) wall.push_back({static_cast<float>(i) * 0.5f + 0.25f, 5.25f, 0.25f, 1});
+	GlobalMap map(0.5, 50.0);
+	map.insert(wall, Eigen::Isometry3d::Identity(), 0);
+	Eigen::Isometry3d drifted = Eigen::Isometry3d::Identity();
+	drifted.translation() = Eigen::Vector3d(0, 0.8, 0);  // where the odometry thinks the second visit was
+	map.insert(wall, drifted, 1);
+	ASSERT_EQ(map.points().size(), 40u);  // two copies of the wall, 0.8 m apart
+	map.correct({Eigen::Isometry3d::Identity(), drifted.inverse()});
+	ASSERT_EQ(map.points().size(), 20u);
+	for (std::size_t i = 0; i < 20; ++i)
+	{
+		EXPECT_NEAR(map.points()[i].x, wall[i].x, 1e-5);
+		EXPECT_NEAR(map.points()[i].y, 5.25, 1e-5);
+	}
+	EXPECT_THROW(map.correct({}), std::out_of_range);  // a correction for each anchor, or none
+}
+
+TEST(GlobalMap, CorrectByIdentityKeepsTheMapAsItWas)
+{
+	GlobalMap map(0.2, 60.0);
+	PointCloud scan;
+	for (int i = 0; i < 500; ++i)
+		scan.push_back({std::sin(0.1f * i) * 20, std::cos(0.13f * i) * 20, 0.01f * static_cast<float>(i % 50), 1});
+	for (std::uint32_t k = 0; k < 3; ++k)
+	{
+		Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+		pose.translation() = Eigen::Vector3d(1.3 * k, 0.1 * k, 0);
+		map.insert(scan, pose, k);
+	}
+	const PointCloud before = map.points();
+	map.correct(std::vector<Eigen::Isometry3d>(3, Eigen::Isometry3d::Identity()));
+	ASSERT_EQ(map.points().size(), before.size());
+	for (std::size_t i = 0; i < before.size(); ++i)
+		EXPECT_TRUE(map.points()[i].x == before[i].x && map.points()[i].y == before[i].y && map.points()[i].z == before[i].z);
+}
+
 // A synthetic drive of 50 km: a street of 20 m between walls, scanned every 20 m. The map keeps its budget
 // of points (memory does not grow with the drive's length) by coarsening its voxels, each time by 2.
 TEST(GlobalMap, LongDriveStaysWithinItsBudget)

@@ -57,6 +57,7 @@ void renderRunSnapshots(const std::string& dir, RunSnapshots run, const PointClo
 	TopDownStyle td;
 	td.title = "vlo-run (" + run.mode + "), " + std::to_string(run.frames) + " frames";
 	if (run.mode == "vo") presentUnscaledVo(trajs.back(), gt, td);
+	td.links = run.loops;
 	renderTopDown(trajs, gt.empty() ? nullptr : &gt, dir + "/topdown.png", td);
 	if (!map.empty())
 	{

@@ -149,6 +149,13 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 															   : trajs[i].name + ", coloured by " + style.value_label;
 		items.push_back({canvas::LegendItem::Line, label(name, trajs[i].traj), paths[i].second, style.line_width + 1});
 	}
+	if (!style.links.empty())
+	{
+		const Rgb linkColor{220, 0, 160};
+		for (const auto& [from, to] : style.links)
+			canvas::polyline(plot, {a.toPixel(from.x(), from.y()) + off, a.toPixel(to.x(), to.y()) + off}, canvas::bgr(linkColor), 1);
+		items.push_back({canvas::LegendItem::Line, style.links_label + " (" + std::to_string(style.links.size()) + ")", linkColor, 1});
+	}
 	markers.insert(markers.end(), paths.begin(), paths.end());
 	const bool late = canvas::startEndMarkers(plot, markers, gt ? 1 : 0);  // the main result's end above the others
 	items.push_back({canvas::LegendItem::Ring, "start of the drive", Rgb{40, 40, 40}});

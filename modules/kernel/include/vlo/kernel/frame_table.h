@@ -29,6 +29,9 @@ class FrameTable
 	/// columns: a stage that ran on another thread wrote into a table of its own (one per frame), and
 	/// merging it in the stages' order gives the table the serial run would have made.
 	void setCells(const FrameTable& part);
+	/// The same into an earlier row: a stage whose result for a frame comes later (loop closure, whose
+	/// thread handles a keyframe some frames after its row was written). Throws std::out_of_range.
+	void setCellsAt(std::size_t row, const FrameTable& part);
 
 	std::size_t rows() const { return rows_.size(); }
 	/// In the CSV's order: the leading columns, then modules by the order each first wrote (a module
@@ -52,7 +55,8 @@ class FrameTable
 		std::string text() const;
 		double number() const;
 	};
-	void setCell(const std::string& column, Cell cell);
+	void setCell(const std::string& column, Cell cell) { setCell(rows_.empty() ? 0 : rows_.size() - 1, column, std::move(cell)); }
+	void setCell(std::size_t row, const std::string& column, Cell cell);
 
 	std::vector<std::string> columns_;
 	std::vector<std::map<std::string, Cell>> rows_;

@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <vector>
 
 namespace vlo::pipeline
 {
@@ -24,8 +25,13 @@ class GlobalMap
 	{
 	}
 
-	/// Adds the scan (LiDAR frame) seen from world_T_lidar; keeps the first point of each voxel.
-	void insert(const PointCloud& scan, const Eigen::Isometry3d& world_T_lidar);
+	/// Adds the scan (LiDAR frame) seen from world_T_lidar; keeps the first point of each voxel. Each
+	/// point kept remembers `anchor` (the run's row of the scan), for correct().
+	void insert(const PointCloud& scan, const Eigen::Isometry3d& world_T_lidar, std::uint32_t anchor = 0);
+	/// Moves each point by the correction of its anchor (world_corrected_T_world, e.g. from loop
+	/// closure), then keeps the first point of each voxel again: two visits of a place that the
+	/// correction brings together leave one copy. In place: no second map at the end of a long run.
+	void correct(const std::vector<Eigen::Isometry3d>& correction_of_anchor);
 	const PointCloud& points() const { return points_; }
 	/// Hands the points over and frees the voxel index: the map is done (end of a run). A copy would
 	/// double the memory of the largest structure of a long run just when the outputs need some.
@@ -37,10 +43,13 @@ class GlobalMap
 	std::uint64_t key(const Eigen::Vector3f& w) const;
 	/// Doubles the voxel and keeps the first point of each new voxel, in the order they came.
 	void coarsen();
+	/// Keeps the first point of each voxel of the current size, in the order they came.
+	void thin();
 
 	double leaf_, max_range_;
 	std::size_t max_points_;
 	VoxelHashMap occupied_;  ///< voxel key -> nothing (a set)
 	PointCloud points_;
+	std::vector<std::uint32_t> anchors_;  ///< one per point
 };
 }  // namespace vlo::pipeline

@@ -38,7 +38,10 @@ struct PipelineOptions : public OptionSet
 	/// Mode vlo: the scale-corrected VO motion is LOAM's initial guess (false: constant velocity, the
 	/// A-LOAM baseline inside a vlo run, for the ablation).
 	bool bootstrapping = true;
-	int scale_snapshot_every = 0;  ///< mode vlo: a scale-corrector snapshot every N frames (0 = none)
+	int scale_snapshot_every = 0;
+	/// Modes lo and vlo: close loops over the LiDAR odometry ([loop]); trajectory_slam.tum and map.pcd
+	/// from the corrected poses, the odometry's own trajectory unchanged beside it.
+	bool loop_closure = false;  ///< mode vlo: a scale-corrector snapshot every N frames (0 = none)
 	/// 1: everything on one thread; 2: frames read ahead on a thread, and the LiDAR odometry on another,
 	/// up to 3 frames behind the motion source; auto: 2 when the process may use two cores or more.
 	/// The outputs are the same whatever the count: the motion source never reads the LiDAR odometry's results.

@@ -27,6 +27,7 @@ struct RunSummary
 	double path_length_m = 0;  ///< of the final trajectory
 	double max_step_m = 0;  ///< largest frame-to-frame translation of the final trajectory
 	std::string final_trajectory;  ///< file name inside the output folder
+	std::string slam_trajectory;  ///< trajectory_slam.tum with [pipeline] loop_closure, else empty
 	/// False when the run stopped before the end of its input (Ctrl-C, a rawlog cut short): its outputs are
 	/// those of the frames up to last_frame, and stop_reason says why.
 	bool complete = true;

@@ -13,8 +13,11 @@ struct RunSnapshots
 {
 	std::string mode;  ///< [pipeline] mode; in "vo" the last trajectory is the VO's, in map units
 	std::size_t frames = 0;  ///< rows of frames.csv, for the title
-	/// The LiDAR odometry's, then the motion source's, each in the vehicle frame of the first frame.
+	/// The loop-closed one (with loop closure), the LiDAR odometry's, then the motion source's, each in the
+	/// vehicle frame of the first frame.
 	std::vector<NamedTrajectory> trajectories;
+	/// Accepted loop closures: the positions of the two visits on the LiDAR odometry's path.
+	std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> loops;
 	std::string gt_path;  ///< TUM file, or empty
 	double t_first = 0, t_last = 0;  ///< the run's first and last frame times: the ground truth drawn
 };

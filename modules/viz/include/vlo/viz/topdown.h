@@ -7,6 +7,7 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,9 @@ struct TopDownStyle
 	/// coloured by them (turbo, from 0 to their largest) and a colour bar labelled value_label replaces the scale bar.
 	std::vector<double> values;
 	std::string value_label = "value";
+	/// Segments drawn thin across the paths, e.g. loop closures between two visits of a place.
+	std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> links;
+	std::string links_label = "loop closure";
 };
 
 /// The world -> pixel mapping drawTopDown uses. Throws InputError when there is no pose at all.

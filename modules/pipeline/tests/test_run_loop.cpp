@@ -286,6 +286,34 @@ TEST_F(RunLoop, BootstrappingOffLeavesTheLidarOdometryToItself)
 	EXPECT_EQ(column(out("frames.csv"), "vo_metric_motion"), (std::vector<std::string>{"0", "0", "1", "1", "1", "1"}));
 }
 
+// With loop closure on and no place visited twice (3 m of straight road) the loop-closed trajectory is the
+// odometry's, pose for pose; the run says how many keyframes and loops it had. Mode vo has no LiDAR
+// odometry to close loops over: no trajectory_slam.tum.
+TEST_F(RunLoop, LoopClosureWithoutRevisitKeepsTheOdometrysPoses)
+{
+	const RunSummary lo = run({"pipeline.mode=lo", "pipeline.loop_closure=true"});
+	EXPECT_EQ(lo.slam_trajectory, "trajectory_slam.tum");
+	const Trajectory odometry = io::readTum(out("trajectory_lo.tum")), slam = io::readTum(out("trajectory_slam.tum"));
+	ASSERT_EQ(slam.size(), std::size_t(kFrames));
+	ASSERT_EQ(odometry.size(), slam.size());
+	for (std::size_t i = 0; i < slam.size(); ++i)
+	{
+		EXPECT_EQ(slam[i].t, odometry[i].t);
+		EXPECT_NEAR((slam[i].pose.translation() - odometry[i].pose.translation()).norm(), 0, 1e-9);
+	}
+	const std::vector<std::string> h = header(out("frames.csv"));
+	EXPECT_NE(std::find(h.begin(), h.end(), "ms_loop"), h.end());
+	std::ifstream summaryFile(out("summary.json"));
+	const auto summary = nlohmann::json::parse(summaryFile);
+	EXPECT_EQ(summary["trajectory_slam"], "trajectory_slam.tum");
+	EXPECT_EQ(summary["loops_accepted"], 0);
+
+	std::filesystem::remove_all(out(""));
+	const RunSummary vo = run({"pipeline.mode=vo", "pipeline.loop_closure=true", "pipeline.visual_odometry=fake_stereo"});
+	EXPECT_TRUE(vo.slam_trajectory.empty());
+	EXPECT_FALSE(std::filesystem::exists(out("trajectory_slam.tum")));
+}
+
 TEST_F(RunLoop, ModeLoRunsNoVisualOdometryAndModeVoNoLidarOdometry)
 {
 	const RunSummary lo = run({"pipeline.mode=lo"});

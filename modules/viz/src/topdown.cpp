@@ -151,10 +151,9 @@ cv::Mat drawTopDown(const std::vector<NamedTrajectory>& trajs, const Trajectory*
 	}
 	if (!style.links.empty())
 	{
-		const Rgb linkColor{220, 0, 160};
 		for (const auto& [from, to] : style.links)
-			canvas::polyline(plot, {a.toPixel(from.x(), from.y()) + off, a.toPixel(to.x(), to.y()) + off}, canvas::bgr(linkColor), 1);
-		items.push_back({canvas::LegendItem::Line, style.links_label + " (" + std::to_string(style.links.size()) + ")", linkColor, 1});
+			canvas::polyline(plot, {a.toPixel(from.x(), from.y()) + off, a.toPixel(to.x(), to.y()) + off}, canvas::bgr(style.links_color), 2);
+		items.push_back({canvas::LegendItem::Line, style.links_label + " (" + std::to_string(style.links.size()) + ")", style.links_color, 2});
 	}
 	markers.insert(markers.end(), paths.begin(), paths.end());
 	const bool late = canvas::startEndMarkers(plot, markers, gt ? 1 : 0);  // the main result's end above the others

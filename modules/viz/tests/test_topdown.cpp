@@ -115,6 +115,19 @@ TEST(TopDown, OneStartRingForTheDriveAndADiamondWhereALaterPathBegins)
 	EXPECT_TRUE(test::colorNear(img, area.toPixel(0, 0), Rgb{255, 255, 255}, 1, 10));  // the ring's white centre
 }
 
+TEST(TopDown, LinksAreDrawnBetweenTheirEndsAndCounted)
+{
+	const std::vector<NamedTrajectory> trajs{{"est", diagonal(-8), {}}, {"other", diagonal(8), {}}};
+	TopDownStyle style;
+	style.links = {{Eigen::Vector3d(50, 42, 0), Eigen::Vector3d(50, 58, 0)}};
+	const cv::Mat img = drawTopDown(trajs, nullptr, style);
+	const PlotArea a = topDownArea(trajs, nullptr, style);
+	for (double y : {46.0, 50.0, 54.0}) EXPECT_TRUE(test::colorNear(img, a.toPixel(50, y), style.links_color, 1, 40)) << y;
+	EXPECT_FALSE(test::colorNear(img, a.toPixel(30, 30), style.links_color, 3, 40));  // nowhere else
+	const cv::Mat without = drawTopDown(trajs, nullptr);
+	EXPECT_EQ(test::findLegend(img).height, test::findLegend(without).height + 24);  // one legend row more
+}
+
 TEST(ColorBar, TickLabelsNeverTouch)
 {
 	// An ATE of up to 34 mm on a 260-pixel bar: five ticks (0.005 m) would need "0.000" ... "0.030" side by side,

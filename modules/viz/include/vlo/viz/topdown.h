@@ -36,6 +36,7 @@ struct TopDownStyle
 	/// Segments drawn thin across the paths, e.g. loop closures between two visits of a place.
 	std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> links;
 	std::string links_label = "loop closure";
+	Rgb links_color{220, 0, 160};
 };
 
 /// The world -> pixel mapping drawTopDown uses. Throws InputError when there is no pose at all.

@@ -7,6 +7,7 @@
 #include <vlo/kernel/run_config.h>
 #include <vlo/kernel/scale_correction.h>
 #include <vlo/kernel/visual_odometry.h>
+#include <vlo/loop/options.h>
 #include <vlo/pipeline/pipeline_options.h>
 #include <vlo/pipeline/point_times.h>
 
@@ -32,6 +33,8 @@ kernel::RunConfig loadEverySection()
 	config.load(pipeline, "pipeline");
 	pipeline::PointTimeOptions times;
 	config.load(times, "lidar");
+	loop::LoopOptions loop;
+	config.load(loop, "loop");
 	for (auto& [name, m] : kernel::registry<kernel::VisualOdometryModule>().createAll()) m->configure(config);
 	for (auto& [name, m] : kernel::registry<kernel::ScaleCorrectionModule>().createAll()) m->configure(config, 0);
 	for (auto& [name, m] : kernel::registry<kernel::LidarOdometryModule>().createAll()) m->configure(config);
@@ -79,7 +82,7 @@ TEST(OptionsDoc, ListsEveryDeclaredOption)
 TEST(OptionsDoc, CoversEveryModuleFamily)
 {
 	const auto config = loadEverySection();
-	for (const char* section : {"pipeline", "vo.orb", "vo.mapping", "scale", "loam.scan", "loam.prior", "icp"})
+	for (const char* section : {"pipeline", "vo.orb", "vo.mapping", "scale", "loam.scan", "loam.prior", "icp", "loop"})
 		EXPECT_EQ(config.declared().count(section), 1u) << section;
 	EXPECT_GE(config.declared().at("loam.mapping").size(), 20u);
 }

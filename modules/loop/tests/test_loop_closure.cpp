@@ -115,15 +115,15 @@ TEST(LoopClosure, RejectsAStreetOfIdenticalFacades)
 {
 	std::mt19937 rng(9);
 	World world;
-	addGround(world, rng, -150, 450, -20, 20, 0.5);
+	addGround(world, rng, -100, 250, -20, 20, 0.5);
 	constexpr double kPeriod = 12;
-	for (double x = -150; x < 450; x += kPeriod)
+	for (double x = -96; x < 250; x += kPeriod)
 	{
 		addBox(world, rng, {x, 8, 0}, {10, 10, 12}, 2);
 		addBox(world, rng, {x, -18, 0}, {10, 10, 12}, 2);
 		addBox(world, rng, {x + 11, 6, 0}, {0.3, 0.3, 6}, 40);
 	}
-	const DriveResult r = drive(world, samplePath([](double s) { return pose2d(s, 0, 0); }, 200), 1.0, 0);
+	const DriveResult r = drive(world, samplePath([](double s) { return pose2d(s, 0, 0); }, 150), 1.0, 0);
 	print(r);
 	EXPECT_EQ(r.accepted(), 0u);
 	EXPECT_GE(r.rejectedFor("drift"), 1u);

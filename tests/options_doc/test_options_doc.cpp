@@ -82,7 +82,7 @@ TEST(OptionsDoc, ListsEveryDeclaredOption)
 TEST(OptionsDoc, CoversEveryModuleFamily)
 {
 	const auto config = loadEverySection();
-	for (const char* section : {"pipeline", "vo.orb", "vo.mapping", "scale", "loam.scan", "loam.prior", "icp"})
+	for (const char* section : {"pipeline", "vo.orb", "vo.mapping", "scale", "loam.scan", "loam.prior", "icp", "loop"})
 		EXPECT_EQ(config.declared().count(section), 1u) << section;
 	EXPECT_GE(config.declared().at("loam.mapping").size(), 20u);
 }

@@ -16,7 +16,7 @@ void LoopOptions::declare(OptionTable& t)
 	t.add("min_revisit_path", min_revisit_path, ">= 0", "path driven between two visits of a place, at least [m]");
 	t.add("scan_voxel", scan_voxel, "> 0", "keyframe scans are thinned to this voxel [m]");
 	t.add("submap_keyframes", submap_keyframes, ">= 0", "keyframes on each side of the candidate in its submap");
-	t.add("inlier_distance", inlier_distance, "> 0", "a registered point within this of the submap is an inlier [m]");
+	t.add("inlier_distance", inlier_distance, "> 0", "a registered point within this of the submap's surface is an inlier [m]");
 	t.add("min_inlier_fraction", min_inlier_fraction, "(0, 1]", "fewer inliers: the loop is rejected");
 	t.add("min_constraint", min_constraint, "[0, 1]", "weakest over strongest direction of the registration: less is degenerate");
 	t.add("max_drift_per_metre", max_drift_per_metre, ">= 0", "a loop's correction must be within this times the path between the visits ...");

@@ -25,6 +25,9 @@ struct LoopRecord
 	double yaw_deg = 0;  ///< the descriptor's yaw of the current scan in the candidate's
 	double inlier_fraction = 0;  ///< after registration (0 when not registered)
 	double rms = 0;  ///< of the inliers [m]
+	double constraint = 0;  ///< weakest over strongest direction of the registration's translation
+	double drift = 0;  ///< [m] the correction the loop implies (odometry vs registration)
+	double path_between = 0;  ///< [m] of odometry from the candidate to the current keyframe
 	bool accepted = false;
 	std::string reason;  ///< why it was rejected; empty when accepted
 	Eigen::Isometry3d candidate_T_current = Eigen::Isometry3d::Identity();  ///< the registration's

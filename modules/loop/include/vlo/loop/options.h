@@ -21,7 +21,7 @@ struct LoopOptions : public OptionSet
 	// Geometric verification.
 	double scan_voxel = 0.5;  ///< [m] keyframe scans are thinned to this voxel
 	int submap_keyframes = 5;  ///< the candidate's submap: its keyframe and this many on each side
-	double inlier_distance = 0.3;  ///< [m] a point registered within this of the submap is an inlier
+	double inlier_distance = 0.3;  ///< [m] a point registered within this of the submap's surface is an inlier
 	double min_inlier_fraction = 0.6;  ///< fewer inliers: rejected
 	double min_constraint = 0.1;  ///< weakest direction of the registration over its strongest: less is degenerate (a corridor)
 	double max_drift_per_metre = 0.1;  ///< the loop's correction must be within this times the path between the visits ...

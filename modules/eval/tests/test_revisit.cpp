@@ -3,6 +3,7 @@
 #include <vlo/core/se3.h>
 #include <vlo/core/units.h>
 #include <vlo/eval/evaluate.h>
+#include <vlo/eval/kitti_metric.h>
 #include <vlo/eval/report.h>
 #include <vlo/eval/revisit.h>
 
@@ -176,6 +177,34 @@ TEST(Revisit, OppositeDirectionIsARevisit)
 	EXPECT_NEAR(r.t_rmse_m, 0.5, 1e-9);
 	EXPECT_NEAR(r.t_max_m, 0.5, 1e-9);
 	EXPECT_NEAR(r.r_max_deg, 0, 1e-6);
+}
+
+TEST(Revisit, GridFindsWhatComparingEveryPairFinds)
+{
+	// A 3D drive around a 10 m circle, up and down, three times (wiggly: 0.1 s, ~0.1 m apart), negative
+	// coordinates included: the cubes must give each pose the same nearest earlier revisit as a search of all.
+	const Trajectory gt = wiggly(2000);
+	const RevisitOptions o{0.7, 20};
+	const std::vector<double> dist = trajectoryDistances(gt);
+	std::vector<RevisitPair> expected;
+	for (std::size_t j = 0; j < gt.size(); ++j)
+	{
+		RevisitPair best{0, j, INFINITY, 0, 0};
+		for (std::size_t i = 0; i < j; ++i)
+		{
+			const double d = (gt[i].pose.translation() - gt[j].pose.translation()).norm();
+			if (dist[j] - dist[i] >= o.min_path_m && d <= o.radius_m && d < best.distance_m) best.first = i, best.distance_m = d;
+		}
+		if (std::isfinite(best.distance_m)) expected.push_back(best);
+	}
+	const auto pairs = findRevisits(gt, o);
+	ASSERT_GT(expected.size(), 100u);
+	ASSERT_EQ(pairs.size(), expected.size());
+	for (std::size_t n = 0; n < pairs.size(); ++n)
+	{
+		EXPECT_EQ(pairs[n].first, expected[n].first) << n;
+		EXPECT_EQ(pairs[n].second, expected[n].second) << n;
+	}
 }
 
 TEST(Revisit, RadiusMustBePositive)

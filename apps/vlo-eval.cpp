@@ -1,4 +1,5 @@
-// vlo-eval: scores an estimated trajectory against ground truth (KITTI odometry metric, ATE/ARE, RPE).
+// vlo-eval: scores an estimated trajectory against ground truth (KITTI odometry metric, ATE/ARE, RPE,
+// revisit error).
 #include <vlo/core/app_main.h>
 #include <vlo/core/app_cli.h>
 #include <vlo/core/error.h>
@@ -10,6 +11,7 @@
 #include <vlo/viz/eval_plots.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <set>
@@ -76,7 +78,7 @@ int run(int argc, char** argv)
 		{{"gt", "GT", "ground truth: TUM (vehicle frame) or KITTI poses (camera 0, needs the rig)", true},
 			{"est", "EST", "estimated trajectory, TUM or KITTI poses as --gt; repeat to compare several", true, true},
 			{"kitti-times", "times.txt", "times of KITTI poses' lines (default 0.1 s apart from 0)"},
-			{"metric", "kitti|ate|rpe|all", "metrics to compute (default all)"},
+			{"metric", "kitti|ate|rpe|revisit|all", "metrics to compute (default all)"},
 			{"align", "se3|sim3|none", "alignment before ATE/ARE (default se3; sim3 for unscaled monocular)"},
 			{"json", "OUT.json", "also write the results as JSON"},
 			{"max-dt", "S", "largest ground-truth gap to interpolate across, s (default 3x its median spacing)"},
@@ -85,12 +87,15 @@ int run(int argc, char** argv)
 			{"kitti-calib", "calib.txt", "rig from the Tr line of a KITTI calib.txt: KITTI metric in camera 0"},
 			{"kitti-lengths", "L1,L2,..", "KITTI segment lengths, m (default 100,200,...,800)"},
 			{"kitti-step", "N", "KITTI first frames every N matched frames (default 10)"},
+			{"revisit-radius", "M", "ground-truth positions this close are the same place, m (default 3)"},
+			{"revisit-min-path", "M", "path between two visits of a place, m (default 50)"},
 			{"write-aligned", "OUT.tum", "write the aligned, matched estimate (TUM)"},
 			{"plots", "DIR", "write the KITTI devkit's error plots and the path coloured by ATE (PNG)"}},
 		"vlo-eval --gt GT --est EST [--est EST2 ..] [options]\n\n"
 		"Scores an estimated trajectory against ground truth: the KITTI odometry metric and\n"
-		"ATE/ARE after Umeyama alignment, and the frame-to-frame relative pose error. Files are\n"
-		"TUM (8 numbers a line) or KITTI poses (12). See doc/EVALUATION.md.");
+		"ATE/ARE after Umeyama alignment, the frame-to-frame relative pose error, and the revisit\n"
+		"error (the relative pose between two visits of a place). Files are TUM (8 numbers a line)\n"
+		"or KITTI poses (12). See doc/EVALUATION.md.");
 	eval::EvalOptions opts;
 	opts.gt_name = cl.get("gt");
 	eval::parseMetric(cl.get("metric", "all"), opts);
@@ -106,6 +111,12 @@ int run(int argc, char** argv)
 	const long step = cl.getInt("kitti-step", 10);
 	if (step < 1) failInput("--kitti-step", "must be at least 1");
 	opts.kitti_options.step = static_cast<std::size_t>(step);
+	opts.revisit_options.radius_m = cl.getDouble("revisit-radius", opts.revisit_options.radius_m);
+	if (!(opts.revisit_options.radius_m > 0) || !std::isfinite(opts.revisit_options.radius_m))
+		failInput("--revisit-radius", "must be a positive number of metres");
+	opts.revisit_options.min_path_m = cl.getDouble("revisit-min-path", opts.revisit_options.min_path_m);
+	if (!(opts.revisit_options.min_path_m >= 0) || !std::isfinite(opts.revisit_options.min_path_m))
+		failInput("--revisit-min-path", "must be zero or a positive number of metres");
 
 	const std::vector<std::string> est_files = cl.getAll("est");
 	if (est_files.size() > 1)

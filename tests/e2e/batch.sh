@@ -97,6 +97,10 @@ grep -q "^| lo | [0-9.]* |$" out1/results.md || fail "results.md: no timing for 
 grep -qF -- "- [tiny / lo](runs/tiny/lo/report.md)" out1/results.md || fail "results.md: no link to lo's report.md"
 grep -qF "runs/tiny/broken/report.md" out1/results.md && fail "results.md: links a report the failed run never wrote"
 [ "$(csv_field out1/results.csv tiny broken '' status)" = failed ] || fail "results.csv: broken is not failed"
+# A 25-frame drive never comes back to a place: 0 revisits, no number and no revisit table.
+[ "$(csv_field out1/results.csv tiny lo lo revisit_pairs)" = 0 ] || fail "results.csv: tiny/lo revisit_pairs is not 0"
+[ -z "$(csv_field out1/results.csv tiny lo lo revisit_t_rmse_m)" ] || fail "results.csv: a revisit error without a revisit"
+grep -q "^## Revisits" out1/results.md && fail "results.md: a revisit table for a drive without revisits"
 echo "local run: $(($(date +%s) - start)) s"
 
 # --collect again gives the same files.

@@ -98,6 +98,34 @@ make_tum 60 1 1.02 0 short_est.tum
 grep -q "^vlo-eval: warning: --plots: no KITTI devkit plots: no segment: the ground-truth path .* is 53.1 m" short.err ||
 	fail "short plots: no reason given: $(cat short.err)"
 
+# 3d. Revisits: a 100 m square driven 1.5 times (1 m steps), the estimate 0.5 m off from the second lap on:
+#     204 revisits (the second lap's 201 poses and the 3 poses within 3 m before the start), 0.5 m each across
+#     the laps (test_revisit.cpp has the closed forms); the 1349 m line has none.
+awk -v n=601 'BEGIN {
+	for (k = 0; k < n; k++) {
+		side = int(k / 100) % 4; m = k % 100; x = 0; y = 0
+		if (side >= 1) x = 100; if (side >= 2) y = 100; if (side == 3) x = 0
+		if (side == 0) x += m; else if (side == 1) y += m; else if (side == 2) x = 100 - m; else y = 100 - m
+		yaw = 1.5707963267948966 * side
+		printf "%.1f %.3f %.3f 0 0 0 %.12f %.12f\n", 0.1 * k, x, y, sin(yaw / 2), cos(yaw / 2)
+	}
+}' > square.tum
+awk '{ if (NR > 400) { $2 += 0.3; $3 -= 0.4 } print }' square.tum > square_off.tum
+"$EVAL" --gt square.tum --est square_off.tum --json square.json > square.txt || fail "square: exit code"
+expect_eq square.json revisit_pairs 204
+expect_near square.json revisit_t_max_m 0.5 1e-6
+expect_near square.json revisit_t_rmse_m 0.496310 1e-5   # 0.5 sqrt(201 / 204)
+grep -q "^  Revisit error, translation  0.4963 m RMS, 0.5000 m max  (204 pairs: within 3 m after >= 50 m of path)$" square.txt ||
+	fail "square: no revisit line: $(cat square.txt)"
+"$EVAL" --gt square.tum --est square_off.tum --metric revisit --revisit-radius 2.5 --revisit-min-path 60 --json square2.json \
+	> /dev/null || fail "square --metric revisit: exit code"
+expect_eq square2.json revisit_pairs 203
+expect_eq square2.json ate_rmse_m null
+"$EVAL" --gt gt10hz.tum --est est2.tum --json line.json > /dev/null || fail "line: exit code"
+expect_eq line.json revisit_pairs 0
+expect_eq line.json revisit_t_rmse_m null
+grep -q '"revisit_note": "no revisit: ' line.json || fail "line: no revisit_note"
+
 # 4. Bad input.
 printf '0 0 0 0 0 0 0 1\n0.1 nan 0 0 0 0 0 1\n' > nan.tum
 printf '0 0 0 0 0 0 0 1\n0.1 1 0 0 0 0 1\n' > short_line.tum
@@ -109,6 +137,8 @@ expect_bad "short line" "short_line.tum: line 2: expected 8 numbers" --gt short_
 expect_bad "no overlap" "no pose overlaps the ground truth" --gt curve.tum --est later.tum
 expect_bad "bad alignment" "unknown alignment 'sim2'" --gt curve.tum --est curve.tum --align sim2
 expect_bad "bad metric" "unknown metric" --gt curve.tum --est curve.tum --metric speed
+expect_bad "bad revisit radius" "--revisit-radius: must be a positive number" --gt curve.tum --est curve.tum --revisit-radius 0
+expect_bad "bad revisit path" "--revisit-min-path: must be zero or a positive" --gt curve.tum --est curve.tum --revisit-min-path -5
 expect_bad "calib without Tr" "calib_no_tr.txt: missing key 'Tr'" --gt curve.tum --est curve.tum --kitti-calib calib_no_tr.txt
 expect_bad "bad rig" "expected 12 numbers" --gt curve.tum --est curve.tum --cam0-T-vehicle "1 0 0"
 expect_bad "missing --est" "missing required option '--est'" --gt curve.tum

@@ -77,6 +77,8 @@ RunJob runJob(const Plan& p, const Sequence& s, const Config& c, const std::stri
 	j.eval_args = {bin_dir + "/vlo-eval", "--gt", s.gt, "--metric", "all", "--align", c.align};
 	if (!p.kitti_lengths.empty()) j.eval_args.insert(j.eval_args.end(), {"--kitti-lengths", p.kitti_lengths});
 	if (p.kitti_step > 0) j.eval_args.insert(j.eval_args.end(), {"--kitti-step", std::to_string(p.kitti_step)});
+	if (p.revisit_radius) j.eval_args.insert(j.eval_args.end(), {"--revisit-radius", numberWord(*p.revisit_radius)});
+	if (p.revisit_min_path) j.eval_args.insert(j.eval_args.end(), {"--revisit-min-path", numberWord(*p.revisit_min_path)});
 	if (s.gt_translation_only) j.eval_args.push_back("--gt-translation-only");
 	if (!s.kitti_calib.empty()) j.eval_args.insert(j.eval_args.end(), {"--kitti-calib", s.kitti_calib});
 	j.write_aligned = c.align == "sim3";

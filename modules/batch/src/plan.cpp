@@ -134,6 +134,8 @@ Plan parsePlan(const std::string& text, const std::string& origin, const std::st
 			plan.kitti_lengths = k.kitti_lengths;
 			if (r.has("kitti_lengths")) checkLengths(plan.kitti_lengths, r.where("kitti_lengths"));
 			plan.kitti_step = k.kitti_step;
+			if (r.has("revisit_radius")) plan.revisit_radius = k.revisit_radius;
+			if (r.has("revisit_min_path")) plan.revisit_min_path = k.revisit_min_path;
 			plan.source = k.source;
 			continue;
 		}

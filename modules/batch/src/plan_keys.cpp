@@ -15,6 +15,8 @@ void PlanKeys::declare(OptionTable& t)
 	t.add("data", data, "any", "folder of the sequences' rawlogs, relative to the working folder");
 	t.add("kitti_lengths", kitti_lengths, "any", "comma-separated segment lengths [m] of the KITTI metric");
 	t.add("kitti_step", kitti_step, "[1, 1000000]", "frames between KITTI metric segment starts");
+	t.add("revisit_radius", revisit_radius, "(0, 1000]", "revisit error: positions this close are one place [m]");
+	t.add("revisit_min_path", revisit_min_path, "[0, 1000000]", "revisit error: path between two visits [m]");
 	t.add("source", source, "any", "what the tables name as the plan's source");
 }
 

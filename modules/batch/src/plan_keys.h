@@ -14,6 +14,7 @@ struct PlanKeys : public OptionSet
 {
 	std::string data = "rawlogs/experiments", kitti_lengths, source;
 	int kitti_step = 0;
+	double revisit_radius = 3, revisit_min_path = 50;  ///< vlo-eval's defaults
 
    protected:
 	void declare(OptionTable& t) override;

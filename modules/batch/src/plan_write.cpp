@@ -13,6 +13,8 @@ std::string resolvedPlanText(const Plan& plan)
 	o << "[plan]\nsource = " << plan.source << "\ndata = " << plan.data_dir << "\n";
 	if (!plan.kitti_lengths.empty()) o << "kitti_lengths = " << plan.kitti_lengths << "\n";
 	if (plan.kitti_step > 0) o << "kitti_step = " << plan.kitti_step << "\n";
+	if (plan.revisit_radius) o << "revisit_radius = " << numberWord(*plan.revisit_radius) << "\n";
+	if (plan.revisit_min_path) o << "revisit_min_path = " << numberWord(*plan.revisit_min_path) << "\n";
 	for (const auto& s : plan.sequences)
 	{
 		o << "\n[sequence " << s.name << "]\nrawlog = " << s.rawlog << "\n";

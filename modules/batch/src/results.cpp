@@ -24,6 +24,12 @@ std::string firstErrorLine(const std::string& path)
 	return first;
 }
 
+bool trajectoryBefore(const std::string& a, const std::string& b)
+{
+	const bool aClosed = a == kLoopClosedTrajectory, bClosed = b == kLoopClosedTrajectory;
+	return aClosed != bClosed ? bClosed : a < b;
+}
+
 RunResult collectRun(const std::string& dir, const Sequence& s, const Config& c)
 {
 	RunResult r;
@@ -88,7 +94,7 @@ RunResult collectRun(const std::string& dir, const Sequence& s, const Config& c)
 		r.trajectories.push_back(t);
 	}
 	std::sort(r.trajectories.begin(), r.trajectories.end(),
-		[](const TrajectoryResult& a, const TrajectoryResult& b) { return a.name < b.name; });
+		[](const TrajectoryResult& a, const TrajectoryResult& b) { return trajectoryBefore(a.name, b.name); });
 	if (r.trajectories.empty())
 	{
 		r.status = RunStatus::Failed;

@@ -1,4 +1,5 @@
 #include <vlo/batch/tables.h>
+#include <vlo/batch/words.h>
 
 #include <cmath>
 #include <cstdio>
@@ -107,6 +108,27 @@ std::string odometryCell(const RunResult* r, const std::string& name, double* v)
 	return std::isfinite(ate) ? fmt("ATE %.3f m", ate) : std::string("n/a");
 }
 
+/// Revisits: the ATE beside the revisit error (translation RMS), or why there is none.
+std::string revisitCell(const RunResult* r, const std::string& name, double* v)
+{
+	std::string why;
+	const TrajectoryResult* t = trajectoryOf(r, name, why);
+	if (!t) return why;
+	v[0] = t->eval.number("ate_rmse_m"), v[1] = t->eval.number("revisit_t_rmse_m");
+	const std::string ate = std::isfinite(v[0]) ? fmt("%.3f", v[0]) : "n/a";
+	if (std::isfinite(v[1])) return ate + fmt(" / %.3f", v[1]);
+	return ate + (t->eval.number("revisit_pairs") == 0 ? " / no revisit" : " / n/a");
+}
+
+/// Whether any trajectory's ground truth comes back to a place: the revisit table is shown then.
+bool anyRevisit(const std::vector<RunResult>& rs)
+{
+	for (const auto& r : rs)
+		for (const auto& t : r.trajectories)
+			if (t.eval.number("revisit_pairs") > 0) return true;
+	return false;
+}
+
 std::string timingCell(const RunResult* r, const std::string&, double* v)
 {
 	if (!r || r->status == RunStatus::Missing) return "not run";
@@ -124,7 +146,7 @@ std::string markdownResults(
 	std::vector<Row> voRows, odoRows;
 	for (const auto& c : plan.configs)
 	{
-		std::set<std::string> names;
+		std::set<std::string, bool (*)(const std::string&, const std::string&)> names(trajectoryBefore);
 		for (const auto& r : rs)
 			if (r.config == c.name)
 				for (const auto& t : r.trajectories) names.insert(t.name);
@@ -150,6 +172,16 @@ std::string markdownResults(
 	  << " m. \"ATE x m\": the ATE RMSE (SE(3)-aligned unless the configuration says otherwise) where the KITTI metric "
 		 "is not available (translation-only ground truth, or a drive shorter than the shortest segment).\n\n";
 	table(o, plan, rs, odoRows, {"configuration / trajectory", false, "%.2f / %.4f"}, odometryCell);
+	if (anyRevisit(rs))
+	{
+		o << "\n## Revisits: ATE / revisit error\n\nATE RMSE [m] after the configuration's alignment / revisit error RMS [m]: the estimated relative "
+			 "pose between two visits of a place against the truth's (doc/EVALUATION.md section 6; places within "
+		  << (plan.revisit_radius ? numberWord(*plan.revisit_radius) : "3") << " m after at least "
+		  << (plan.revisit_min_path ? numberWord(*plan.revisit_min_path) : "50")
+		  << " m of path). \"no revisit\": that drive never comes back to a place. `" << kLoopClosedTrajectory
+		  << "`: the loop-closed trajectory (trajectory_" << kLoopClosedTrajectory << ".tum), beside the odometry's.\n\n";
+		table(o, plan, rs, odoRows, {"configuration / trajectory", false, "%.3f / %.3f"}, revisitCell);
+	}
 	o << "\n## Timing\n\nMilliseconds per frame of vlo-run's frame loop (summary.json), whole run.\n\n";
 	std::vector<Row> timeRows;
 	for (const auto& c : plan.configs) timeRows.push_back({c.name, ""});

@@ -2,6 +2,8 @@
 #include <vlo/core/error.h>
 
 #include <cctype>
+#include <cstdio>
+#include <cstdlib>
 
 namespace vlo::batch
 {
@@ -62,5 +64,16 @@ std::string joinWords(const std::vector<std::string>& words)
 		s += (s.empty() ? "" : " ") + (quote ? "\"" + w + "\"" : w);
 	}
 	return s;
+}
+
+std::string numberWord(double v)
+{
+	char buf[32];
+	for (int digits = 6; digits <= 17; ++digits)
+	{
+		std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+		if (std::strtod(buf, nullptr) == v) break;
+	}
+	return buf;
 }
 }  // namespace vlo::batch

@@ -117,6 +117,21 @@ TEST(BatchJobs, RunCommandLines)
 	EXPECT_EQ(runJob(p, p.sequences[0], own, "/bin", "/out").run.argv[4], "/ini/vo.ini");
 }
 
+TEST(BatchJobs, RevisitOptionsOfThePlanGoToVloEval)
+{
+	Plan p = tinyPlan("/data");
+	p.revisit_radius = 2.5;
+	p.revisit_min_path = 0.1;
+	const RunJob j = runJob(p, p.sequences[0], p.configs[1], "/bin", "/out");
+	const std::vector<std::string> eval{"/bin/vlo-eval", "--gt", "/data/seq.gt.tum", "--metric", "all", "--align", "se3",
+		"--kitti-lengths", "5,10", "--revisit-radius", "2.5", "--revisit-min-path", "0.1", "--est", "trajectory_slam.tum",
+		"--json", "eval_slam.json"};
+	EXPECT_EQ(j.evalStep("slam").argv, eval);
+	EXPECT_NE(shellLine(j).find("--revisit-radius 2.5 --revisit-min-path 0.1 --est"), std::string::npos) << shellLine(j);
+	EXPECT_EQ(numberWord(50), "50");
+	EXPECT_EQ(numberWord(1.0 / 3), "0.3333333333333333");  // as many digits as read back the same
+}
+
 TEST(BatchJobs, ShellLineAndDirectExecutionLeaveTheSameFiles)
 {
 	// Awkward characters in every path: the shell line must quote them, the direct run needs no quoting.

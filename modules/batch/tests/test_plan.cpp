@@ -46,6 +46,8 @@ const std::string kGood = R"(# comment
 [plan]
 kitti_lengths = 10,20
 kitti_step = 5
+revisit_radius = 2.5
+revisit_min_path = 0.1
 
 [sequence real]
 ini = base.ini
@@ -74,6 +76,8 @@ TEST_F(BatchPlan, ReadsSectionsInFileOrderWithPathsResolved)
 	EXPECT_EQ(p.data_dir, data);
 	EXPECT_EQ(p.kitti_lengths, "10,20");
 	EXPECT_EQ(p.kitti_step, 5);
+	EXPECT_EQ(p.revisit_radius, 2.5);
+	EXPECT_EQ(p.revisit_min_path, 0.1);
 	ASSERT_EQ(p.sequences.size(), 2u);
 	EXPECT_EQ(p.sequences[0].name, "real");
 	EXPECT_EQ(p.sequences[0].rawlog, data + "/real.rawlog");
@@ -108,6 +112,7 @@ TEST_F(BatchPlan, DataDirFromThePlanRelativeToTheCurrentFolder)
 	// Without a [plan] data key: rawlogs/experiments under the current folder.
 	const Plan q = parsePlan("[sequence s]\nini = base.ini\nsim = --frames 3\n[config c]\n", "p.ini", dir / "ini");
 	EXPECT_EQ(q.data_dir, (std::filesystem::current_path() / "rawlogs/experiments").string());
+	EXPECT_FALSE(q.revisit_radius || q.revisit_min_path);  // vlo-eval's defaults: no argument
 }
 
 TEST_F(BatchPlan, ResolvedCopyReadsBackTheSameFromAnywhere)
@@ -119,6 +124,8 @@ TEST_F(BatchPlan, ResolvedCopyReadsBackTheSameFromAnywhere)
 	EXPECT_EQ(q.data_dir, p.data_dir);
 	EXPECT_EQ(q.kitti_lengths, p.kitti_lengths);
 	EXPECT_EQ(q.kitti_step, p.kitti_step);
+	EXPECT_EQ(q.revisit_radius, 2.5);
+	EXPECT_EQ(q.revisit_min_path, 0.1);  // written back exactly
 	ASSERT_EQ(q.sequences.size(), 2u);
 	for (std::size_t i = 0; i < 2; ++i)
 	{
@@ -168,6 +175,8 @@ TEST_F(BatchPlan, BadPlansNameFileSectionAndKey)
 	expectError(seq + "[config lo]\nalign = sim\n", {"p.ini: [config lo] align: 'sim' is not one of se3, sim3, none (did you mean sim3?)"});
 	expectError("[plan]\nkitti_lengths = 10,x\n" + seq + cfg, {"[plan] kitti_lengths", "'x'"});
 	expectError("[plan]\nkitti_step = 0\n" + seq + cfg, {"[plan] kitti_step: must be in [1, 1000000]"});
+	expectError("[plan]\nrevisit_radius = 0\n" + seq + cfg, {"[plan] revisit_radius: must be in (0, 1000]"});
+	expectError("[plan]\nrevisit_min_path = -1\n" + seq + cfg, {"[plan] revisit_min_path: must be in [0, 1000000]"});
 	expectError("[sequence a/b]\nini = base.ini\n" + cfg, {"[sequence a/b]", "letters, digits"});
 	expectError("[sequence n]\nini = base.ini\nsim = --frames 3 --out x.rawlog\n" + cfg,
 		{"[sequence n] sim", "'--out' is not allowed"});

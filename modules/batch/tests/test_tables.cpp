@@ -17,10 +17,11 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string evalJson(const std::string& ate, const std::string& are, const std::string& t, const std::string& r)
+std::string evalJson(const std::string& ate, const std::string& are, const std::string& t, const std::string& r,
+	const std::string& revisit = "")
 {
 	// The layout of vlo-eval --json (modules/eval/src/report.cpp), nested array included.
-	return "{\n  \"gt\": \"a \\\"b\\\".tum\",\n  \"n_matched\": 25,\n  \"gt_length_m\": 31.5,\n  \"ate_rmse_m\": " + ate +
+	return "{\n" + revisit + "  \"gt\": \"a \\\"b\\\".tum\",\n  \"n_matched\": 25,\n  \"gt_length_m\": 31.5,\n  \"ate_rmse_m\": " + ate +
 		",\n  \"are_rmse_deg\": " + are + ",\n  \"sim3_scale\": 0.98,\n  \"ate_note\": null,\n  \"kitti_t_err_pct\": " + t +
 		",\n  \"kitti_r_err_deg_per_m\": " + r + ",\n  \"kitti_segments\": 12,\n  \"kitti_per_length\": [\n    {\"length_m\": 10, "
 												 "\"segments\": 6, \"t_err_pct\": 1.5}\n  ],\n  \"kitti_note\": null\n}\n";
@@ -120,6 +121,44 @@ TEST_F(BatchTables, MarkdownHasThePaperTables)
 	EXPECT_TRUE(has(md, "| s2 / vo_mono (vo) | vlo-eval: error: too few poses |\n")) << md;
 	EXPECT_TRUE(has(md, "![snapshots/s1.png](snapshots/s1.png)")) << md;
 	EXPECT_FALSE(has(md, "vo_mono / lo"));
+	EXPECT_FALSE(has(md, "Revisits")) << "no drive comes back to a place: no revisit table";
+}
+
+TEST_F(BatchTables, LoopClosedTrajectoryBesideTheOdometryWithTheRevisitError)
+{
+	// s1/lo also left trajectory_slam.tum (loop closure on); s1 comes back to its places, s2 does not.
+	const auto revisit = [](const char* pairs, const char* t_rmse) {
+		return std::string("  \"revisit_pairs\": ") + pairs + ",\n  \"revisit_t_rmse_m\": " + t_rmse +
+			",\n  \"revisit_t_max_m\": 0.7,\n  \"revisit_r_rmse_deg\": 0.25,\n  \"revisit_r_max_deg\": 0.5,\n";
+	};
+	test::writeFile(runDir(out, "s1", "lo") + "/eval_lo.json", evalJson("0.5", "0.3", "1.25", "0.0042", revisit("204", "0.4963")));
+	test::writeFile(runDir(out, "s1", "lo") + "/trajectory_slam.tum", kTum);
+	test::writeFile(runDir(out, "s1", "lo") + "/eval_slam.json", evalJson("0.12", "0.1", "0.5", "0.001", revisit("204", "0.031")));
+	test::writeFile(runDir(out, "s2", "lo") + "/eval_lo.json", evalJson("0.456", "null", "null", "null", revisit("0", "null")));
+	const auto rs = collectResults(plan, out);
+	ASSERT_EQ(rs[0].trajectories.size(), 2u);
+	EXPECT_EQ(rs[0].trajectories[0].name, "lo");
+	EXPECT_EQ(rs[0].trajectories[1].name, "slam");
+	EXPECT_DOUBLE_EQ(rs[0].trajectories[1].eval.number("revisit_t_rmse_m"), 0.031);
+	EXPECT_TRUE(trajectoryBefore("vlo", "slam")) << "the loop-closed trajectory after its odometry's";
+	EXPECT_TRUE(trajectoryBefore("lo", "vlo"));
+	EXPECT_FALSE(trajectoryBefore("slam", "vlo"));
+
+	const auto md = markdownResults(plan, rs, {});
+	EXPECT_TRUE(has(md, "| lo / lo | 1.25 / 0.0042 | ATE 0.456 m | – |\n| lo / slam | 0.50 / 0.0010 | – | – |\n")) << md;
+	EXPECT_TRUE(has(md, "## Revisits: ATE / revisit error\n")) << md;
+	EXPECT_TRUE(has(md, "places within 3 m after at least 50 m of path")) << md;
+	EXPECT_TRUE(has(md, "| lo / lo | 0.500 / 0.496 | 0.456 / no revisit | – |\n| lo / slam | 0.120 / 0.031 | – | – |\n")) << md;
+	EXPECT_TRUE(has(md, "| broken | failed | failed | – |\n| later | not run | not run | – |\n\n## Timing")) << md;
+	EXPECT_FALSE(has(md, "vo_mono / vo | 0.789")) << "the visual odometry stays in its own table";
+	plan.revisit_radius = 2.5;
+	EXPECT_TRUE(has(markdownResults(plan, rs, {}), "places within 2.5 m after at least 50 m")) << md;
+
+	const auto csv = csvResults(rs);
+	EXPECT_TRUE(has(csv, "\ns1,lo,lo,ok,se3,0.5,0.3,0.98,1.25,0.0042,12,,,25,31.5,204,0.4963,0.7,0.25,0.5,25,20,\n"
+						 "s1,lo,slam,ok,se3,0.12,0.1,0.98,0.5,0.001,12,,,25,31.5,204,0.031,0.7,0.25,0.5,25,20,\n"))
+		<< csv;
+	EXPECT_TRUE(has(csv, "\ns2,lo,lo,ok,se3,0.456,,0.98,,,12,,,25,31.5,0,,0.7,0.25,0.5,25,30,\n")) << csv;
 }
 
 TEST_F(BatchTables, MeanOverSequencesWhenAllHaveNumbers)
@@ -135,12 +174,13 @@ TEST_F(BatchTables, CsvHasEveryNumber)
 	EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 9);
 	EXPECT_EQ(csv.substr(0, csv.find('\n')),
 		"sequence,config,trajectory,status,align,ate_rmse_m,are_rmse_deg,sim3_scale,kitti_t_err_pct,kitti_r_err_deg_per_m,"
-		"kitti_segments,rpe_t_rmse_m,rpe_r_rmse_deg,n_matched,gt_length_m,frames,ms_per_frame,error");
-	EXPECT_TRUE(has(csv, "\ns1,lo,lo,ok,se3,0.5,0.3,0.98,1.25,0.0042,12,,,25,31.5,25,20,\n")) << csv;
-	EXPECT_TRUE(has(csv, "\ns2,lo,lo,ok,se3,0.456,,0.98,,,12,,,25,31.5,25,30,\n")) << csv;
-	EXPECT_TRUE(has(csv, "\ns1,broken,,failed,se3,,,,,,,,,,,,,vlo-run: error: x.ini: unknown key 'y' | in [x]\n")) << csv;
-	EXPECT_TRUE(has(csv, "\ns2,vo_mono,vo,failed,sim3,,,,,,,,,,,,60,vlo-eval: error: too few poses\n")) << csv;
-	EXPECT_TRUE(has(csv, "\ns1,later,,not run,se3,,,,,,,,,,,,,not run\n")) << csv;
+		"kitti_segments,rpe_t_rmse_m,rpe_r_rmse_deg,n_matched,gt_length_m,revisit_pairs,revisit_t_rmse_m,revisit_t_max_m,"
+		"revisit_r_rmse_deg,revisit_r_max_deg,frames,ms_per_frame,error");
+	EXPECT_TRUE(has(csv, "\ns1,lo,lo,ok,se3,0.5,0.3,0.98,1.25,0.0042,12,,,25,31.5,,,,,,25,20,\n")) << csv;
+	EXPECT_TRUE(has(csv, "\ns2,lo,lo,ok,se3,0.456,,0.98,,,12,,,25,31.5,,,,,,25,30,\n")) << csv;
+	EXPECT_TRUE(has(csv, "\ns1,broken,,failed,se3,,,,,,,,,,,,,,,,,,vlo-run: error: x.ini: unknown key 'y' | in [x]\n")) << csv;
+	EXPECT_TRUE(has(csv, "\ns2,vo_mono,vo,failed,sim3,,,,,,,,,,,,,,,,,60,vlo-eval: error: too few poses\n")) << csv;
+	EXPECT_TRUE(has(csv, "\ns1,later,,not run,se3,,,,,,,,,,,,,,,,,,not run\n")) << csv;
 }
 
 TEST_F(BatchTables, SnapshotPerSequenceWithTrajectories)

@@ -23,11 +23,12 @@ std::string span(const Trajectory& t)
 
 void parseMetric(const std::string& s, EvalOptions& opts)
 {
-	if (s != "all" && s != "ate" && s != "kitti" && s != "rpe")
-		failInput("--metric", "unknown metric '" + s + "' (expected kitti, ate, rpe or all)");
+	if (s != "all" && s != "ate" && s != "kitti" && s != "rpe" && s != "revisit")
+		failInput("--metric", "unknown metric '" + s + "' (expected kitti, ate, rpe, revisit or all)");
 	opts.ate = s == "all" || s == "ate";
 	opts.kitti = s == "all" || s == "kitti";
 	opts.rpe = s == "all" || s == "rpe";
+	opts.revisit = s == "all" || s == "revisit";
 }
 
 EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptions& opts)
@@ -58,6 +59,21 @@ EvalReport evaluate(const Trajectory& gt, const Trajectory& est, const EvalOptio
 	if (!opts.rpe) r.rpe_note = "not requested (--metric)";
 	else if (opts.gt_translation_only) r.rpe_note = "needs full ground-truth poses; the ground truth is translation-only";
 	else r.rpe = computeRpe(a.gt, a.est);
+
+	if (!opts.revisit) r.revisit_note = "not requested (--metric)";
+	else if (opts.gt_translation_only)
+		r.revisit_note = "needs full ground-truth poses; the ground truth is translation-only";
+	else
+	{
+		r.revisit = computeRevisitError(a.gt, a.est, opts.revisit_options);
+		if (r.revisit->empty())
+		{
+			std::ostringstream s;
+			s << "no revisit: the ground truth never comes back within " << opts.revisit_options.radius_m
+			  << " m of a place after at least " << opts.revisit_options.min_path_m << " m of path";
+			r.revisit_note = s.str();
+		}
+	}
 
 	r.kitti_frame = opts.cam0_T_vehicle ? "camera 0" : "as given";
 	if (!opts.kitti)

@@ -25,9 +25,10 @@ nlohmann::ordered_json noteOrNull(const std::string& s) { return s.empty() ? nlo
 
 std::string metricName(const EvalOptions& o)
 {
-	return o.ate && o.kitti && o.rpe ? "all" : o.ate ? "ate"
-		: o.kitti                                    ? "kitti"
-													 : "rpe";
+	if (o.ate && o.kitti && o.rpe && o.revisit) return "all";
+	return o.ate ? "ate" : o.kitti ? "kitti"
+		: o.rpe                    ? "rpe"
+								   : "revisit";
 }
 
 std::string fmt(const char* f, double v)
@@ -46,6 +47,17 @@ KittiNumbers kittiNumbers(const EvalReport& r)
 {
 	if (!r.kitti || r.kitti->empty()) return {};
 	return {100 * r.kitti->t_err, kDegPerRad * r.kitti->r_err, 100 * kDegPerRad * r.kitti->r_err};
+}
+
+/// The revisit error's numbers, empty when not computed or without a revisit.
+struct RevisitNumbers
+{
+	std::optional<double> t_rmse, t_max, r_rmse, r_max;
+};
+RevisitNumbers revisitNumbers(const EvalReport& r)
+{
+	if (!r.revisit || r.revisit->empty()) return {};
+	return {r.revisit->t_rmse_m, r.revisit->t_max_m, r.revisit->r_rmse_deg, r.revisit->r_max_deg};
 }
 }  // namespace
 
@@ -71,6 +83,8 @@ std::string toJson(const EvalReport& r)
 		rt = r.rpe->t_rmse_m, rr = r.rpe->r_rmse_deg, cvt = r.rpe->cv_t_rmse_m, cvr = r.rpe->cv_r_rmse_deg;
 		rx = r.rpe->t_rmse_axes_m.x(), ry = r.rpe->t_rmse_axes_m.y(), rz = r.rpe->t_rmse_axes_m.z();
 	}
+	const auto v = revisitNumbers(r);
+	const nlohmann::ordered_json revisitPairs = r.revisit ? nlohmann::ordered_json(r.revisit->pairs.size()) : nlohmann::ordered_json();
 	const nlohmann::ordered_json j = {{"gt", r.options.gt_name}, {"est", r.options.est_name},
 		{"metric", metricName(r.options)}, {"align", toString(r.options.align)}, {"n_matched", a.matched()},
 		{"n_est", a.n_est}, {"n_gt", a.n_gt}, {"n_dropped_outside_gt", a.n_outside_span},
@@ -85,7 +99,10 @@ std::string toJson(const EvalReport& r)
 		{"kitti_per_length", perLength}, {"kitti_note", noteOrNull(r.kitti_note)}, {"rpe_t_rmse_m", num(rt)},
 		{"rpe_r_rmse_deg", num(rr)}, {"rpe_t_rmse_axes_m", {num(rx), num(ry), num(rz)}},
 		{"gt_constant_velocity_t_rmse_m", num(cvt)}, {"gt_constant_velocity_r_rmse_deg", num(cvr)},
-		{"rpe_note", noteOrNull(r.rpe_note)}};
+		{"rpe_note", noteOrNull(r.rpe_note)}, {"revisit_pairs", revisitPairs},
+		{"revisit_t_rmse_m", num(v.t_rmse)}, {"revisit_t_max_m", num(v.t_max)}, {"revisit_r_rmse_deg", num(v.r_rmse)},
+		{"revisit_r_max_deg", num(v.r_max)}, {"revisit_radius_m", num(r.options.revisit_options.radius_m)},
+		{"revisit_min_path_m", num(r.options.revisit_options.min_path_m)}, {"revisit_note", noteOrNull(r.revisit_note)}};
 	return j.dump(2) + "\n";
 }
 
@@ -124,6 +141,21 @@ std::string formatTable(const EvalReport& r)
 	}
 	else
 		row("ATE / ARE", "n/a: " + r.ate_note);
+	if (r.options.revisit)  // not requested: no line, so that the other metrics' tables stay as they were
+	{
+		const auto v = revisitNumbers(r);
+		const auto& ro = r.options.revisit_options;
+		const std::string where = fmt(" within %g m", ro.radius_m) + fmt(" after >= %g m of path", ro.min_path_m);
+		if (v.t_rmse)
+		{
+			row("Revisit error, translation", fmt("%.4f m RMS", *v.t_rmse) + fmt(", %.4f m max", *v.t_max) + "  (" + std::to_string(r.revisit->pairs.size()) + " pairs:" + where + ")");
+			row("Revisit error, rotation", fmt("%.4f deg RMS", *v.r_rmse) + fmt(", %.4f deg max", *v.r_max));
+		}
+		else if (r.revisit)
+			row("Revisit error", "no revisit (0 pairs:" + where + ")");
+		else
+			row("Revisit error", "n/a: " + r.revisit_note);
+	}
 	const auto k = kittiNumbers(r);
 	if (k.t_pct)
 	{

@@ -2,6 +2,7 @@
 // An experiment plan (doc/BATCH.md): sequences (a rawlog with its ground truth, the base INI of its
 // sensor, optionally the vlo-sim arguments that generate it) crossed with configurations (--set
 // overrides for vlo-run and the alignment used to evaluate them).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,8 @@ struct Plan
 	std::string data_dir;  ///< absolute
 	std::string kitti_lengths;  ///< for vlo-eval --kitti-lengths; empty: vlo-eval's default
 	int kitti_step = 0;  ///< for vlo-eval --kitti-step; 0: vlo-eval's default
+	/// For vlo-eval --revisit-radius / --revisit-min-path (m); empty: vlo-eval's default.
+	std::optional<double> revisit_radius, revisit_min_path;
 	std::vector<Sequence> sequences;  ///< in file order
 	std::vector<Config> configs;  ///< in file order
 };

@@ -10,9 +10,15 @@
 
 namespace vlo::batch
 {
+/// The loop-closed trajectory's name: vlo-run writes trajectory_slam.tum with loop closure on, beside the
+/// odometry's own trajectory_<mode>.tum.
+constexpr const char* kLoopClosedTrajectory = "slam";
+/// The order of a run's trajectories in the tables: by name, the loop-closed one after the odometry's.
+bool trajectoryBefore(const std::string& a, const std::string& b);
+
 struct TrajectoryResult
 {
-	std::string name;  ///< lo, vo, vlo, ... (from trajectory_<name>.tum)
+	std::string name;  ///< lo, vo, vlo, slam, ... (from trajectory_<name>.tum)
 	JsonFields eval;  ///< vlo-eval's JSON (empty when it failed)
 	std::string error;  ///< why there are no numbers; empty when evaluated
 	std::string aligned;  ///< Sim(3)-aligned estimate (absolute path), when written
@@ -32,7 +38,7 @@ struct RunResult
 	std::string error;  ///< for Failed/Missing: what went wrong, one line
 	double ms_per_frame = NAN;  ///< NaN when unknown
 	double frames = NAN;  ///< NaN when unknown
-	std::vector<TrajectoryResult> trajectories;  ///< sorted by name
+	std::vector<TrajectoryResult> trajectories;  ///< in trajectoryBefore order
 };
 
 /// The first line of a log that reports an error ("...error: ..."), else its first non-empty line;

@@ -15,6 +15,9 @@ std::string shellQuote(const std::string& word);
 /// shellQuote of each word, joined by spaces.
 std::string shellJoin(const std::vector<std::string>& words);
 
+/// A number as the shortest text that reads back the same ("2.5", "0.1", "50"): a plan value or an argument.
+std::string numberWord(double v);
+
 /// The inverse of splitWords for writing a plan value: words with blanks get double quotes.
 std::string joinWords(const std::vector<std::string>& words);
 }  // namespace vlo::batch

@@ -4,6 +4,7 @@
 #include <vlo/eval/association.h>
 #include <vlo/eval/ate.h>
 #include <vlo/eval/kitti_metric.h>
+#include <vlo/eval/revisit.h>
 #include <vlo/eval/rpe.h>
 
 #include <Eigen/Geometry>
@@ -15,7 +16,7 @@ namespace vlo::eval
 {
 struct EvalOptions
 {
-	bool ate = true, kitti = true, rpe = true;  ///< which metrics to compute
+	bool ate = true, kitti = true, rpe = true, revisit = true;  ///< which metrics to compute
 	Alignment align = Alignment::SE3;  ///< for ATE/ARE only; the KITTI metric is relative and unaligned
 	AssociationOptions association;
 	/// Ground-truth orientations are meaningless (RTK positions only): ARE and KITTI are skipped.
@@ -23,10 +24,11 @@ struct EvalOptions
 	/// When set, both trajectories (vehicle frame) are moved to camera 0 for the KITTI metric.
 	std::optional<Eigen::Isometry3d> cam0_T_vehicle;
 	KittiOptions kitti_options;
+	RevisitOptions revisit_options;
 	std::string gt_name = "ground truth", est_name = "estimate";  ///< for messages (file paths)
 };
 
-/// "all" | "ate" | "kitti" | "rpe" -> sets opts.ate / opts.kitti / opts.rpe; throws InputError otherwise.
+/// "all" | "ate" | "kitti" | "rpe" | "revisit" -> sets opts.ate / .kitti / .rpe / .revisit; throws InputError otherwise.
 void parseMetric(const std::string& s, EvalOptions& opts);
 
 struct EvalReport
@@ -41,6 +43,8 @@ struct EvalReport
 	std::string kitti_frame;  ///< "camera 0" or "as given"
 	std::optional<RpeResult> rpe;
 	std::string rpe_note;  ///< why the RPE is missing, if it is
+	std::optional<RevisitResult> revisit;  ///< set when computed, even without a revisit
+	std::string revisit_note;  ///< why the revisit error is missing (or "no revisit: ..."), if it is
 	/// Signs that the ground truth is of another drive (little time overlap, a rotation error of tens of
 	/// degrees, a path of another length): one line each, for the user.
 	std::vector<std::string> warnings;

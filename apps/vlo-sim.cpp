@@ -13,12 +13,14 @@ int main(int argc, char** argv)
 {
 	return vlo::runApp("vlo-sim", [&] {
 		const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 1,
-			{{"scenario", "NAME", "urban | trees | corridor (default urban)"},
+			{{"scenario", "NAME", "urban | trees | corridor | loop | facades (default urban)"},
 				{"lidar", "MODEL", "hdl64 | vlp16 (default hdl64)"},
 				{"frames", "N", "number of 10 Hz frames (default 100)"},
 				{"seed", "S", "world, drive and noise seed (default 1)"},
 				{"out", "FILE.rawlog", "output rawlog; FILE.gt.tum and FILE_Images/ go beside it", true},
 				{"trajectory", "POSES.txt", "drive along KITTI camera-0 poses instead of a generated drive"},
+				{"reverse-after", "LAPS", "loop: turn around at the turning place nearest to LAPS laps and drive the circuit the other way (default 1.5; 0: never)"},
+				{"facade-period", "P", "facades: metres between the street's identical units, a multiple of 8 from 16 to 96 (default 24)"},
 				{"kitti-dir", "DIR", "also write the KITTI odometry layout (sequence 00) to DIR"},
 				{"lidar-distortion", "", "each LiDAR firing at its own time over the 0.1 s sweep"},
 				{"ideal-deskew", "", "with --lidar-distortion: each return moved to the LiDAR's pose at the frame's time (times 0): the best any deskew gives"},
@@ -47,6 +49,11 @@ int main(int argc, char** argv)
 		cfg.frames = static_cast<int>(frames);
 		cfg.seed = static_cast<uint64_t>(seed);
 		cfg.kitti_poses = cl.get("trajectory");
+		if (cl.has("reverse-after") && cfg.scenario != vlo::sim::Scenario::Loop) vlo::failInput("--reverse-after", "needs --scenario loop");
+		if (cl.has("facade-period") && cfg.scenario != vlo::sim::Scenario::Facades)
+			vlo::failInput("--facade-period", "needs --scenario facades");
+		cfg.reverse_after_laps = cl.getDouble("reverse-after", cfg.reverse_after_laps);
+		cfg.facade_period = cl.getDouble("facade-period", cfg.facade_period);
 		cfg.lidar_distortion = cl.has("lidar-distortion");
 		cfg.lidar_ideal_deskew = cl.has("ideal-deskew");
 		if (cl.has("fisheye") && !cl.has("camera-distortion")) vlo::failInput("--fisheye", "needs --camera-distortion K1,K2,K3,K4");

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # vlo-sim from the command line: help, bad input, determinism (same seed, same bytes), what
-# rawlog-edit sees, and the scenario, LiDAR, distortion, foliage and KITTI-trajectory variants.
+# rawlog-edit sees, and the scenario (loop and facades among them), LiDAR, distortion, foliage and
+# KITTI-trajectory variants.
 set -euo pipefail
 : "${VLO_BIN:?}" "${VLO_WORK:?}" "${VLO_DATA:?}"
 rm -rf "$VLO_WORK" && mkdir -p "$VLO_WORK" && cd "$VLO_WORK"
@@ -25,6 +26,12 @@ expect_error "ideal-deskew: needs --lidar-distortion" --no-realism --ideal-deske
 expect_error "realism: contradicts --no-realism" --realism --no-realism --out x.rawlog
 expect_error "realism: contradicts --no-noise" --realism --no-noise --out x.rawlog
 expect_error "point-times: needs the realism" --no-realism --point-times --out x.rawlog
+expect_error "reverse-after: needs --scenario loop" --reverse-after 2 --out x.rawlog
+expect_error "facade-period: needs --scenario facades" --scenario loop --facade-period 24 --out x.rawlog
+expect_error "facade-period: must be a multiple of 8 m" --scenario facades --facade-period 20 --out x.rawlog
+expect_error "reverse-after: must be between 0" --scenario loop --reverse-after -1 --out x.rawlog
+expect_error "traffic: not on the loop" --scenario loop --traffic 2 --out x.rawlog
+expect_error "has its own road" --scenario facades --trajectory nope.txt --out x.rawlog
 if ls x.* x_Images ./*.partial > /dev/null 2>&1; then fail "output left after an error"; fi
 
 # Same seed, same bytes: rawlog, images, ground truth.
@@ -64,10 +71,14 @@ grep -qa "CObservationPointCloud" a/t.rawlog && ! grep -qa "CObservationVelodyne
 	fail "a realistic sweep must be a point cloud without times"
 grep -qa "CObservationVelodyneScan" p/t.rawlog || fail "--point-times: no Velodyne scan with times"
 
-# Variants: HDL-64 corridor with distortion; urban along the first KITTI 00 poses.
+# Variants: HDL-64 corridor with distortion; urban along the first KITTI 00 poses; loop; facades.
 sim --scenario corridor --frames 2 --lidar-distortion --out d/c.rawlog
 tar -xJf "$VLO_DATA/kitti_gt_poses.tar.xz" kitti_gt_poses/00.txt
 sim --scenario urban --lidar vlp16 --frames 3 --trajectory kitti_gt_poses/00.txt --out k/u.rawlog
 [ "$(ls k/u_Images | wc -l)" -eq 3 ] || fail "3 images expected"
+# The revisit scenarios (test_loop.cpp checks their geometry).
+sim --scenario loop --lidar vlp16 --frames 2 --reverse-after 0 --out l/l.rawlog
+sim --scenario facades --lidar vlp16 --frames 2 --facade-period 32 --out g/f.rawlog
+[ "$(grep -vc "^#" l/l.gt.tum)" -eq 2 ] && [ "$(ls g/f_Images | wc -l)" -eq 2 ] || fail "loop / facades: 2 frames expected"
 if ls ./*/*.partial > /dev/null 2>&1; then fail "partial output left"; fi
 echo OK

@@ -15,7 +15,9 @@ Scenario parseScenario(const std::string& name)
 	if (name == "urban") return Scenario::Urban;
 	if (name == "trees") return Scenario::Trees;
 	if (name == "corridor") return Scenario::Corridor;
-	failInput("--scenario", "unknown scenario '" + name + "' (urban, trees or corridor)");
+	if (name == "loop") return Scenario::Loop;
+	if (name == "facades") return Scenario::Facades;
+	failInput("--scenario", "unknown scenario '" + name + "' (urban, trees, corridor, loop or facades)");
 }
 
 std::string scenarioName(Scenario s)
@@ -25,6 +27,8 @@ std::string scenarioName(Scenario s)
 		case Scenario::Urban: return "urban";
 		case Scenario::Trees: return "trees";
 		case Scenario::Corridor: return "corridor";
+		case Scenario::Loop: return "loop";
+		case Scenario::Facades: return "facades";
 	}
 	return "?";
 }

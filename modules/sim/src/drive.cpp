@@ -41,6 +41,21 @@ void step(double target, const DriveStyle& st, double& v, double& a)
 	a += std::clamp(want - a, -kJerk * kDt, kJerk * kDt);
 	v = std::max(0.5, v + a * kDt);
 }
+
+/// The speed from which every bend in the next 120 m can still be taken at the lateral limit, braking
+/// at half the comfortable deceleration after 1.5 s (the speed controller lags behind its target).
+double bendSpeed(const Road& road, const DriveStyle& st, double s, double v)
+{
+	double limit = 1e9;
+	for (double ds = 0; ds <= 120; ds += 1)
+	{
+		const double k = std::abs(road.at(s + ds).curvature);
+		if (k < 1e-6) continue;
+		const double room = std::max(0.0, ds - 1.5 * v);
+		limit = std::min(limit, std::sqrt(st.lateral_a_max / k + st.a_max * room));
+	}
+	return std::max(st.bend_v_min, limit);
+}
 }  // namespace
 
 VehicleMotion::VehicleMotion(Trajectory samples) : samples_(std::move(samples)) {}
@@ -81,6 +96,7 @@ VehicleMotion driveAlong(const Road& road, const DriveStyle& style, double s0, d
 	Rng rng = Rng::stream(seed, "lane weave");
 	const double weaveAmp = rng.uniform(0.1, 0.25), weavePeriod = rng.uniform(6, 12), weavePhase = rng.uniform(0, 6.3);
 	double v = plan.target(0), a = 0, s = s0;
+	if (style.brake_for_bends) v = std::min(v, bendSpeed(road, style, s, 0));
 	Trajectory out;
 	const int n = static_cast<int>(std::ceil(duration / kDt)) + 1;
 	for (int i = 0; i < n; ++i)
@@ -88,8 +104,9 @@ VehicleMotion driveAlong(const Road& road, const DriveStyle& style, double s0, d
 		const double t = i * kDt;
 		// Slow down ahead of bends: the sharpest bend in the next 40 m limits the target.
 		double kmax = 0;
-		for (double ds = 0; ds <= 40; ds += 5) kmax = std::max(kmax, std::abs(road.at(s + ds).curvature));
+		for (double ds = 0; ds <= 40 && !style.brake_for_bends; ds += 5) kmax = std::max(kmax, std::abs(road.at(s + ds).curvature));
 		const double vcurve = kmax > 1e-6 ? std::sqrt(style.lateral_a_max / kmax) : 1e9;
+		const double vbend = style.brake_for_bends ? bendSpeed(road, style, s, v) : std::max(style.v_min, vcurve);
 		const Station st = road.at(s);
 		const double lat = style.lane_offset + weaveAmp * std::sin(2 * M_PI * t / weavePeriod + weavePhase);
 		const double dlat = weaveAmp * 2 * M_PI / weavePeriod * std::cos(2 * M_PI * t / weavePeriod + weavePhase) / v;
@@ -104,7 +121,7 @@ VehicleMotion driveAlong(const Road& road, const DriveStyle& style, double s0, d
 			Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
 							  .toRotationMatrix();
 		out.push_back(p);
-		step(std::min(plan.target(t), std::max(style.v_min, vcurve)), style, v, a);
+		step(std::min(plan.target(t), vbend), style, v, a);
 		s += v * kDt;
 	}
 	return VehicleMotion(std::move(out));

@@ -10,7 +10,7 @@ namespace
 double wrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 }  // namespace
 
-Road::Road(std::vector<Station> stations) : st_(std::move(stations))
+Road::Road(std::vector<Station> stations, bool closed) : st_(std::move(stations)), closed_(closed)
 {
 	for (std::size_t i = 0; i < st_.size(); ++i)
 	{
@@ -19,9 +19,23 @@ Road::Road(std::vector<Station> stations) : st_(std::move(stations))
 	}
 }
 
+double Road::arcDistance(double a, double b) const
+{
+	const double d = std::abs(a - b);
+	if (!closed_ || length() <= 0) return d;
+	const double m = std::fmod(d, length());
+	return std::min(m, length() - m);
+}
+
 Station Road::at(double s) const
 {
 	if (st_.empty()) return {};
+	if (closed_ && length() > 0 && (s < 0 || s >= length()))
+	{
+		Station r = at(s - std::floor(s / length()) * length());
+		r.s = s;
+		return r;
+	}
 	if (s <= st_.front().s) return st_.front();
 	if (s >= st_.back().s) return st_.back();
 	const auto it = std::upper_bound(st_.begin(), st_.end(), s, [](double v, const Station& x) { return v < x.s; });
@@ -57,7 +71,7 @@ const Station* Road::nearest(const Eigen::Vector2d& xy, double radius, double s_
 			for (int i : it->second)
 			{
 				const Station& s = st_[i];
-				if (exclude > 0 && std::abs(s.s - s_self) <= exclude) continue;
+				if (exclude > 0 && arcDistance(s.s, s_self) <= exclude) continue;
 				const double d2 = (s.p.head<2>() - xy).squaredNorm();
 				if (d2 < best_d2) best_d2 = d2, best = &s;
 			}
@@ -65,9 +79,9 @@ const Station* Road::nearest(const Eigen::Vector2d& xy, double radius, double s_
 	return best;
 }
 
-Road roadThrough(const std::vector<Eigen::Vector3d>& points, double extend)
+Road roadThrough(const std::vector<Eigen::Vector3d>& points, double extend, double step)
 {
-	// Drop repeated points (the vehicle standing still), then resample every metre.
+	// Drop repeated points (the vehicle standing still), then resample every `step` metres.
 	std::vector<Eigen::Vector3d> pts;
 	for (const auto& p : points)
 		if (pts.empty() || (p - pts.back()).head<2>().norm() > 0.05) pts.push_back(p);
@@ -85,7 +99,7 @@ Road roadThrough(const std::vector<Eigen::Vector3d>& points, double extend)
 	for (std::size_t i = 0; i + 1 < poly.size(); ++i)
 	{
 		const double len = (poly[i + 1] - poly[i]).head<2>().norm();
-		for (; next <= s + len; next += 1.0)
+		for (; next <= s + len; next += step)
 		{
 			const double t = (next - s) / std::max(len, 1e-9);
 			Station x;
@@ -104,7 +118,7 @@ Road roadThrough(const std::vector<Eigen::Vector3d>& points, double extend)
 		st[i].grade = d.z() / std::max(1e-6, d.head<2>().norm());
 	}
 	for (std::size_t i = 1; i + 1 < st.size(); ++i)
-		st[i].curvature = wrapAngle(st[i + 1].heading - st[i - 1].heading) / 2.0;
+		st[i].curvature = wrapAngle(st[i + 1].heading - st[i - 1].heading) / (2 * step);
 	return Road(std::move(st));
 }
 }  // namespace vlo::sim

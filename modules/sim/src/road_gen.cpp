@@ -52,6 +52,18 @@ double curvatureAt(const std::vector<Piece>& pieces, double s)
 }
 }  // namespace
 
+Road straightRoad(double length)
+{
+	std::vector<Station> st;
+	for (double s = 0; s <= length; s += 1.0)
+	{
+		Station x;
+		x.s = s, x.p.x() = s;
+		st.push_back(x);
+	}
+	return Road(std::move(st));
+}
+
 Road generateRoad(const RoadStyle& style, double length, Rng& rng)
 {
 	const auto pieces = curvaturePieces(style, length, rng);

@@ -96,19 +96,26 @@ World buildWorld(const WorldSpec& spec, const Road& road)
 	p.tex = makeTextures(w, spec.scenario, cs, spec.seed);
 	buildStreet(w, road, cs, p.tex.ground, 0, road.length());
 	const double L = road.length();
-	for (double side : {-1.0, 1.0})
-	{
-		if (spec.scenario == Scenario::Trees)
-			buildTreesSide(p, side, 0, L);
-		else if (spec.scenario == Scenario::Corridor)
-			buildUrbanSide(p, side, 0, L, spec.corridor_from, spec.corridor_to);
-		else
-			buildUrbanSide(p, side, 0, L, 0, 0);
-	}
+	if (spec.scenario == Scenario::Loop)
+		buildLoopSides(p, spec.turning_places, spec.park_from, spec.park_to);
+	else if (spec.scenario == Scenario::Facades)
+		buildFacadeStreet(p, spec.facade_period, 0, L);
+	else
+		for (double side : {-1.0, 1.0})
+		{
+			if (spec.scenario == Scenario::Trees)
+				buildTreesSide(p, side, 0, L);
+			else if (spec.scenario == Scenario::Corridor)
+				buildUrbanSide(p, side, 0, L, spec.corridor_from, spec.corridor_to);
+			else
+				buildUrbanSide(p, side, 0, L, 0, 0);
+		}
 	if (spec.scenario == Scenario::Corridor) buildCorridorWalls(p, spec.corridor_from, spec.corridor_to);
 	// Terrain last: it skips what the road and the buildings cover.
 	const double covered = cs.half_width + (cs.sidewalk > 0 ? cs.sidewalk : cs.shoulder) - 0.3;
-	buildTerrain(w, road, p.tex.ground.terrain, 90, spec.seed,
+	// The facades' street is flat all along: its ground repeats with the facades.
+	const double relief = spec.scenario == Scenario::Facades ? 0 : 1;
+	buildTerrain(w, road, p.tex.ground.terrain, 90, spec.seed, relief,
 		[&](const Eigen::Vector2d& xy) { return p.occupied(xy) || road.nearest(xy, covered) != nullptr; });
 	return w;
 }

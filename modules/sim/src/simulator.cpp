@@ -3,6 +3,7 @@
 #include <vlo/core/error.h>
 #include <vlo/sim/camera_errors.h>
 #include <vlo/sim/camera_sim.h>
+#include <vlo/sim/circuit.h>
 #include <vlo/sim/lidar_errors.h>
 #include <vlo/sim/lidar_sim.h>
 #include <vlo/sim/renderer.h>
@@ -51,6 +52,8 @@ struct Drive
 	Road road;
 	VehicleMotion motion;
 	double corridor_from = 0, corridor_to = 0;  ///< arc lengths of the corridor's walls
+	Circuit circuit;  ///< loop: the circuit (its road is `road`) and where the vehicle turns around
+	double turn_at = 0;
 };
 
 /// Road and motion along KITTI camera-0 poses.
@@ -69,11 +72,41 @@ Drive kittiDrive(const SimConfig& cfg)
 	return d;
 }
 
+double driveDuration(const SimConfig& cfg) { return (cfg.frames - 1) / cfg.rate_hz + 0.2; }
+
+/// Laps of the city-block circuit, turning around after cfg.reverse_after_laps.
+Drive loopDrive(const SimConfig& cfg)
+{
+	Drive d;
+	d.circuit = cityBlockCircuit();
+	const double duration = driveDuration(cfg);
+	DriveStyle ds;
+	ds.lane_offset = 0;  // the lap path is the lane already
+	ds.brake_for_bends = true;  // corners of 13 m radius and U-turns
+	// The planned distance ignores the bends, so the path is long enough; 150 m more for the look ahead.
+	const double dist = plannedDistance(ds, duration, cfg.seed) + 150;
+	d.turn_at = turnaroundDistance(d.circuit, cfg.reverse_after_laps);
+	d.motion = driveAlong(lapPath(d.circuit, dist, d.turn_at), ds, 0, duration, cfg.seed);
+	d.road = d.circuit.road;
+	return d;
+}
+
+/// A straight street whose start lies kBehind before the vehicle's.
+Drive facadesDrive(const SimConfig& cfg)
+{
+	Drive d;
+	const double duration = driveDuration(cfg);
+	const DriveStyle ds;
+	d.road = straightRoad(kBehind + plannedDistance(ds, duration, cfg.seed) + kAhead);
+	d.motion = driveAlong(d.road, ds, kBehind, duration, cfg.seed);
+	return d;
+}
+
 /// Random road and drive; the road is sized for the planned distance.
 Drive generatedDrive(const SimConfig& cfg)
 {
 	Drive d;
-	const double duration = (cfg.frames - 1) / cfg.rate_hz + 0.2;
+	const double duration = driveDuration(cfg);
 	DriveStyle ds;
 	if (cfg.scenario == Scenario::Corridor) ds.v_min = 8, ds.v_max = 12;
 	if (cfg.scenario == Scenario::Trees) ds.v_min = 7;
@@ -112,10 +145,27 @@ Simulator::Simulator(const SimConfig& cfg) : impl_(std::make_unique<Impl>())
 	auto& d = *impl_;
 	d.cfg = cfg;
 	if (cfg.frames < 1) failInput("--frames", "must be at least 1");
-	d.drive = cfg.kitti_poses.empty() ? generatedDrive(cfg) : kittiDrive(cfg);
+	const bool ownRoad = cfg.scenario == Scenario::Loop || cfg.scenario == Scenario::Facades;
+	if (ownRoad && !cfg.kitti_poses.empty())
+		failInput("--scenario " + scenarioName(cfg.scenario), "has its own road: not with --trajectory");
+	if (cfg.scenario == Scenario::Loop && cfg.traffic > 0)
+		failInput("--traffic", "not on the loop (its vehicles drive one way along an open road)");
+	if (cfg.scenario == Scenario::Facades && !(cfg.facade_period >= 16 && cfg.facade_period <= 96 && std::fmod(cfg.facade_period, 8) == 0))
+		failInput("--facade-period", "must be a multiple of 8 m between 16 and 96");
+	if (cfg.scenario == Scenario::Loop && !(cfg.reverse_after_laps >= 0 && cfg.reverse_after_laps <= 1000))
+		failInput("--reverse-after", "must be between 0 (never) and 1000 laps");
+	if (cfg.scenario == Scenario::Loop)
+		d.drive = loopDrive(cfg);
+	else if (cfg.scenario == Scenario::Facades)
+		d.drive = facadesDrive(cfg);
+	else
+		d.drive = cfg.kitti_poses.empty() ? generatedDrive(cfg) : kittiDrive(cfg);
 	WorldSpec spec;
 	spec.scenario = cfg.scenario, spec.seed = cfg.seed;
 	spec.corridor_from = d.drive.corridor_from, spec.corridor_to = d.drive.corridor_to;
+	spec.turning_places = d.drive.circuit.turning_places;
+	spec.park_from = d.drive.circuit.park_from, spec.park_to = d.drive.circuit.park_to;
+	spec.facade_period = cfg.facade_period;
 	d.world = buildWorld(spec, d.drive.road);
 
 	d.scene.insert(d.world.makeOpenGL());
@@ -209,6 +259,10 @@ std::string Simulator::summary() const
 	s << std::fixed << scenarioName(d.cfg.scenario) << " world: " << d.world.triangleCount() << " triangles along "
 	  << d.drive.road.length() << " m of road; drive " << pathLength(groundTruth()) << " m in " << frameCount() << " frames";
 	if (d.drive.corridor_to > d.drive.corridor_from) s << "; corridor " << d.drive.corridor_to - d.drive.corridor_from << " m";
+	if (d.cfg.scenario == Scenario::Loop)
+		s << "; circuit " << d.drive.road.length() << " m a lap"
+		  << (d.drive.turn_at > 0 ? ", U-turn after " + std::to_string(std::lround(d.drive.turn_at)) + " m" : "");
+	if (d.cfg.scenario == Scenario::Facades) s << "; identical facades every " << d.cfg.facade_period << " m";
 	if (d.cfg.traffic > 0) s << "; traffic " << d.cfg.traffic << " vehicles";
 	return s.str();
 }

@@ -74,7 +74,7 @@ void buildStreet(World& w, const Road& road, const CrossSection& cs, const Groun
 	}
 }
 
-void buildTerrain(World& w, const Road& road, int tex, double radius, uint64_t seed,
+void buildTerrain(World& w, const Road& road, int tex, double radius, uint64_t seed, double relief,
 	const std::function<bool(const Eigen::Vector2d&)>& hidden)
 {
 	constexpr double kCell = 4.0;
@@ -92,9 +92,9 @@ void buildTerrain(World& w, const Road& road, int tex, double radius, uint64_t s
 			const Station* st = road.nearest(xy, radius + kCell);
 			if (!st) continue;
 			const double d = (st->p.head<2>() - xy).norm();
-			// Far from the road: gentle random relief (+-1 m), fading in from 20 m to 50 m.
-			const double relief = 2 * (valueNoise(xy.x() / 40, xy.y() / 40, seed) - 0.5) * std::clamp((d - 20) / 30, 0.0, 1.0);
-			z[j * nx + i] = st->p.z() - kTerrainDrop + relief;
+			// Far from the road: gentle random relief (+-relief m), fading in from 20 m to 50 m.
+			const double bump = relief * 2 * (valueNoise(xy.x() / 40, xy.y() / 40, seed) - 0.5) * std::clamp((d - 20) / 30, 0.0, 1.0);
+			z[j * nx + i] = st->p.z() - kTerrainDrop + bump;
 		}
 	const Texture& t = w.texture(tex);
 	auto V = [&](int i, int j) {

@@ -13,9 +13,11 @@ enum class Scenario
 {
 	Urban,  ///< buildings, parked cars, poles, trees, walls along a road with bends and slopes
 	Trees,  ///< a winding road with only trees and ground: few planes, hard for LOAM
-	Corridor  ///< urban, then a long straight between smooth textured walls, then urban again
+	Corridor,  ///< urban, then a long straight between smooth textured walls, then urban again
+	Loop,  ///< a 504 m city-block circuit driven lap after lap, turning around to drive it back (circuit.h)
+	Facades  ///< a straight street of identical units (facade, lamp, car, tree) every facade_period metres
 };
-/// "urban" | "trees" | "corridor"; InputError otherwise.
+/// "urban" | "trees" | "corridor" | "loop" | "facades"; InputError otherwise.
 Scenario parseScenario(const std::string& name);
 std::string scenarioName(Scenario s);
 
@@ -76,5 +78,10 @@ struct SimConfig
 	bool traffic_lidar_returns = true;
 	/// KITTI camera-0 poses to drive along instead of a generated drive ("" = generate).
 	std::string kitti_poses;
+	/// Loop: the vehicle turns around at the turning place nearest to this many laps, then drives the
+	/// circuit the other way; 0 = never.
+	double reverse_after_laps = 1.5;
+	/// Facades: metres between the street's identical units (a multiple of 8 m, so the ground repeats too).
+	double facade_period = 24;
 };
 }  // namespace vlo::sim

@@ -30,6 +30,10 @@ struct DriveStyle
 	double a_max = 1.5;  ///< m/s^2, comfortable acceleration and braking
 	double lateral_a_max = 2.5;  ///< m/s^2 in bends: speed is lowered before them
 	double lane_offset = -1.75;  ///< m to the left of the centre line (right-hand traffic)
+	/// false: the sharpest bend within 40 m sets the speed, never below v_min (gentle roads). true: every
+	/// bend within 120 m, braking for it in time, down to bend_v_min (tight corners, U-turns).
+	bool brake_for_bends = false;
+	double bend_v_min = 2.5;  ///< m/s, with brake_for_bends
 };
 
 /// Planned distance of a drive of `duration` seconds (used to size the road before it exists).

@@ -22,11 +22,15 @@ class Road
 {
    public:
 	Road() = default;
-	explicit Road(std::vector<Station> stations);
+	/// `closed`: a circuit whose last station lies on the first (arc lengths wrap around its length).
+	explicit Road(std::vector<Station> stations, bool closed = false);
 	const std::vector<Station>& stations() const { return st_; }
 	double length() const { return st_.empty() ? 0 : st_.back().s; }
+	bool closed() const { return closed_; }
+	/// Distance along the road between arc lengths a and b (the shorter way round on a circuit).
+	double arcDistance(double a, double b) const;
 
-	/// Interpolated station at arc length s (clamped to the road).
+	/// Interpolated station at arc length s (clamped to the road; taken modulo the length on a circuit).
 	Station at(double s) const;
 	/// Point at arc length s, `lateral` metres to the left of the centre line, `up` above the surface.
 	Eigen::Vector3d point(double s, double lateral, double up = 0) const;
@@ -36,6 +40,7 @@ class Road
 
    private:
 	std::vector<Station> st_;
+	bool closed_ = false;
 	std::unordered_map<int64_t, std::vector<int>> grid_;  // 8 m cells -> station indices
 	static constexpr double kCell = 8.0;
 	static int64_t key(int64_t ix, int64_t iy) { return ix * 1000003LL + iy; }
@@ -57,7 +62,10 @@ struct RoadStyle
 /// heading along world x.
 Road generateRoad(const RoadStyle& style, double length, Rng& rng);
 
+/// A straight, level road along world x from the origin, stations every 1 m.
+Road straightRoad(double length);
+
 /// Road through given centre-line points (for instance a KITTI drive shifted sideways), resampled
-/// every 1 m, extended straight by `extend` metres at both ends.
-Road roadThrough(const std::vector<Eigen::Vector3d>& points, double extend);
+/// every `step` metres, extended straight by `extend` metres at both ends.
+Road roadThrough(const std::vector<Eigen::Vector3d>& points, double extend, double step = 1.0);
 }  // namespace vlo::sim

@@ -13,6 +13,11 @@ struct WorldSpec
 	uint64_t seed = 1;
 	/// Arc-length interval of the corridor's walls (corridor scenario only).
 	double corridor_from = 0, corridor_to = 0;
+	/// Loop: where vehicles turn around (parking lanes kept free) and the outside's park (circuit.h).
+	std::vector<double> turning_places;
+	double park_from = 0, park_to = 0;
+	/// Facades: the street's identical unit repeats every this many metres.
+	double facade_period = 24;
 };
 
 CrossSection crossSectionFor(Scenario s);

@@ -30,8 +30,9 @@ struct GroundTextures
 void buildStreet(World& w, const Road& road, const CrossSection& cs, const GroundTextures& tex, double s0, double s1);
 
 /// Terrain on a 4 m grid within `radius` of the road: slightly below the road near it (the verges
-/// cut into it), gently undulating far from it. Cells whose corners and centre are all `hidden`
-/// (under the road or a building) are left out: they would only cost rendering time.
-void buildTerrain(World& w, const Road& road, int tex, double radius, uint64_t seed,
+/// cut into it), undulating far from it by up to `relief` metres (0: flat). Cells whose corners and
+/// centre are all `hidden` (under the road or a building) are left out: they would only cost
+/// rendering time.
+void buildTerrain(World& w, const Road& road, int tex, double radius, uint64_t seed, double relief,
 	const std::function<bool(const Eigen::Vector2d&)>& hidden);
 }  // namespace vlo::sim

@@ -121,11 +121,11 @@ sed 's/^\[sequence tiny\]/[sequence other]/' tiny.ini > other.ini
 grep -qF "$BIN/vlo-sim --scenario urban --lidar hdl64 --frames 25 --seed 5 --out $W/data/other.rawlog --quiet" other-data.txt ||
 	fail "unexpected data line: $(cat other-data.txt)"
 
-# The shipped plans are valid and expand to 7 drives x 6 (paper table) and 6 drives x 10 (ablation) runs. Their
+# The shipped plans are valid and expand to 7 drives x 6 (paper table), 6 drives x 10 (ablation) and 5 x 2 (loop) runs. Their
 # KITTI drive needs odometry 00's ground-truth poses in the data folder, as doc/BATCH.md says.
 if [ -f "$VLO_DATA/kitti_gt_poses.tar.xz" ]; then
 	mkdir -p shipped && tar -xJf "$VLO_DATA/kitti_gt_poses.tar.xz" -C shipped kitti_gt_poses/00.txt
-	for p in paper-table:42:7 ablation:60:6; do
+	for p in paper-table:42:7 ablation:60:6 loop:10:5; do
 		name=${p%%:*} n=${p#*:}; drives=${n#*:}; n=${n%:*}
 		"$BIN/vlo-batch" --plan "$VLO_SRC/ini/experiments/$name.ini" --out "shipped/$name" --data shipped \
 			--emit-jobs "shipped/$name.jobs" --emit-data "shipped/$name.data" > /dev/null || fail "$name.ini: not a valid plan"
@@ -135,7 +135,7 @@ if [ -f "$VLO_DATA/kitti_gt_poses.tar.xz" ]; then
 	grep -qF -- "--trajectory $W/shipped/kitti_gt_poses/00.txt --frames 1450 --seed 10 --out $W/shipped/kitti00_hdl64.rawlog" \
 		shipped/paper-table.data || fail "paper-table.ini: unexpected KITTI drive line"
 	grep -qF -- "--ini $VLO_SRC/ini/vo-kitti.ini" shipped/paper-table.jobs || fail "paper-table.ini: vo_mono without its INI"
-	echo "ok: shipped plans: 42 and 60 jobs, 7 and 6 drives"
+	echo "ok: shipped plans: 42, 60 and 10 jobs, 7, 6 and 5 drives"
 else
 	skip "$VLO_DATA/kitti_gt_poses.tar.xz not found: shipped plans not checked"
 fi

@@ -1,4 +1,5 @@
-// LoopClosure end to end on synthetic drives: a drifting circuit is closed, and a corridor, a street
+// LoopClosure end to end on synthetic drives: a drifting circuit is closed, and a corridor (two walls
+// and a floor), a street
 // of identical facades and a drive without revisits close nothing.
 #include <gtest/gtest.h>
 #include <vlo/loop/loop_closure.h>
@@ -89,10 +90,10 @@ TEST(LoopClosure, ClosesADriftingSquareCircuit)
 
 TEST(LoopClosure, RejectsACorridorAsDegenerate)
 {
-	std::mt19937 rng(5);
 	World world;
-	addRectangle(world, rng, {-300, 4, 0}, {600, 0, 0}, {0, 0, 5}, 3);
-	addRectangle(world, rng, {-300, -4, 0}, {600, 0, 0}, {0, 0, 5}, 3);
+	addRectangle(world, {-300, 4, 0}, {600, 0, 0}, {0, 0, 5}, 3);
+	addRectangle(world, {-300, -4, 0}, {600, 0, 0}, {0, 0, 5}, 3);
+	addGround(world, -300, 300, -4, 4, 3);
 	// Out along +x at y = -1.5, a U-turn about (60, 0), back along -x at y = 1.5.
 	const double out = 60, turn = M_PI * 1.5;
 	const auto at = [&](double s) {
@@ -113,16 +114,7 @@ TEST(LoopClosure, RejectsACorridorAsDegenerate)
 
 TEST(LoopClosure, RejectsAStreetOfIdenticalFacades)
 {
-	std::mt19937 rng(9);
-	World world;
-	addGround(world, rng, -100, 250, -20, 20, 0.5);
-	constexpr double kPeriod = 12;
-	for (double x = -96; x < 250; x += kPeriod)
-	{
-		addBox(world, rng, {x, 8, 0}, {10, 10, 12}, 2);
-		addBox(world, rng, {x, -18, 0}, {10, 10, 12}, 2);
-		addBox(world, rng, {x + 11, 6, 0}, {0.3, 0.3, 6}, 40);
-	}
+	const World world = facadeStreet(-96, 250, 12);
 	const DriveResult r = drive(world, samplePath([](double s) { return pose2d(s, 0, 0); }, 150), 1.0, 0);
 	print(r);
 	EXPECT_EQ(r.accepted(), 0u);

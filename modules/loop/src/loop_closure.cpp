@@ -109,8 +109,10 @@ struct LoopClosure::Impl
 	double final_seconds = 0;
 };
 
-LoopClosure::LoopClosure(const LoopOptions& options) : impl_(std::make_unique<Impl>(options))
+LoopClosure::LoopClosure(const LoopOptions& options)
 {
+	options.validate();  // options set in code: OptionError here, not a crash on the loop thread
+	impl_ = std::make_unique<Impl>(options);
 	impl_->thread = std::thread([this] { impl_->run(); });
 }
 

@@ -1,6 +1,5 @@
 // LoopClosure end to end on synthetic drives: a drifting circuit is closed, and a corridor (two walls
-// and a floor), a street
-// of identical facades and a drive without revisits close nothing.
+// and a floor), a street of identical facades and a drive without revisits close nothing.
 #include <gtest/gtest.h>
 #include <vlo/loop/loop_closure.h>
 

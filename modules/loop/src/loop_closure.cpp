@@ -34,6 +34,20 @@ void lowerThisThreadsPriority()
 #endif
 }
 
+/// A keyframe on its way to the loop thread: its scan still as the sensor gave it (thinned and
+/// de-skewed there), or already thinned when the loop thread was behind.
+struct PendingKeyframe
+{
+	Keyframe keyframe;
+	PointCloud scan;
+	Eigen::Isometry3d lidar_motion = Eigen::Isometry3d::Identity(), vehicle_T_lidar = Eigen::Isometry3d::Identity();
+	double dt = 0;
+};
+
+// Raw scans waiting beyond this many (3 MB each for an HDL-64), the odometry's thread thins the next
+// ones itself: the memory stays bounded, and the points are the same either way.
+constexpr std::size_t kMaxRawBacklog = 16;
+
 Eigen::Isometry3d blend(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double f)
 {
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -55,18 +69,22 @@ struct LoopClosure::Impl
 		lowerThisThreadsPriority();
 		for (;;)
 		{
-			Keyframe kf;
+			PendingKeyframe next;
 			{
 				std::unique_lock<std::mutex> lock(mutex);
 				wake.wait(lock, [&] { return stop || !queue.empty(); });
 				if (queue.empty()) return;
-				kf = std::move(queue.front());
+				next = std::move(queue.front());
 				queue.pop_front();
+				if (!next.scan.empty()) --raw_backlog;
 			}
 			if (error) continue;  // after a failure the rest is drained, not handled
 			try
 			{
-				worker.process(std::move(kf));
+				if (!next.scan.empty())
+					next.keyframe.points =
+						keyframeScan(next.scan, next.lidar_motion, next.dt, next.vehicle_T_lidar, options.scan_voxel);
+				worker.process(std::move(next.keyframe));
 			}
 			catch (...)
 			{
@@ -97,7 +115,8 @@ struct LoopClosure::Impl
 	// Handed over under the mutex.
 	std::mutex mutex;
 	std::condition_variable wake;
-	std::deque<Keyframe> queue;
+	std::deque<PendingKeyframe> queue;
+	std::size_t raw_backlog = 0;  ///< queued keyframes whose scans are not thinned yet
 	bool stop = false;
 
 	// The loop thread's until it is joined.
@@ -109,8 +128,10 @@ struct LoopClosure::Impl
 	double final_seconds = 0;
 };
 
-LoopClosure::LoopClosure(const LoopOptions& options) : impl_(std::make_unique<Impl>(options))
+LoopClosure::LoopClosure(const LoopOptions& options)
 {
+	options.validate();  // options set in code: OptionError here, not a crash on the loop thread
+	impl_ = std::make_unique<Impl>(options);
 	impl_->thread = std::thread([this] { impl_->run(); });
 }
 
@@ -123,20 +144,33 @@ void LoopClosure::addFrame(long long frame, double t, const Eigen::Isometry3d& w
 	if (m.has_previous) m.path += (world_T_vehicle.translation() - m.previous.translation()).norm();
 	if (m.selector.take(world_T_vehicle))
 	{
-		Keyframe kf;
+		PendingKeyframe next;
+		Keyframe& kf = next.keyframe;
 		kf.frame = frame;
 		kf.t = t;
 		kf.odometry = world_T_vehicle;
 		kf.path = m.path;
 		// The LiDAR's motion over the last frame interval, from the odometry (none for the first frame).
-		const Eigen::Isometry3d motion = m.has_previous
-			? Eigen::Isometry3d(vehicle_T_lidar.inverse() * m.previous.inverse() * world_T_vehicle * vehicle_T_lidar)
-			: Eigen::Isometry3d::Identity();
-		const double dt = m.has_previous ? t - m.previous_t : 0.0;
-		kf.points = keyframeScan(scan, motion, dt, vehicle_T_lidar, m.options.scan_voxel);
+		if (m.has_previous)
+		{
+			next.lidar_motion = vehicle_T_lidar.inverse() * m.previous.inverse() * world_T_vehicle * vehicle_T_lidar;
+			next.dt = t - m.previous_t;
+		}
+		next.vehicle_T_lidar = vehicle_T_lidar;
+		bool behind = false;
 		{
 			std::lock_guard<std::mutex> lock(m.mutex);
-			m.queue.push_back(std::move(kf));
+			behind = m.raw_backlog >= kMaxRawBacklog;
+		}
+		// A copy of the scan costs a fraction of its thinning: the odometry's thread only copies.
+		if (behind || scan.empty())
+			kf.points = keyframeScan(scan, next.lidar_motion, next.dt, vehicle_T_lidar, m.options.scan_voxel);
+		else
+			next.scan = scan;
+		{
+			std::lock_guard<std::mutex> lock(m.mutex);
+			if (!next.scan.empty()) ++m.raw_backlog;
+			m.queue.push_back(std::move(next));
 		}
 		m.wake.notify_one();
 		++m.keyframes_sent;

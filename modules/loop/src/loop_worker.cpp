@@ -44,9 +44,13 @@ void LoopWorker::process(Keyframe keyframe)
 
 	const Keyframe& current = keyframes_[k];
 	const Keyframe& earlier = keyframes_[candidate->keyframe];
-	const icp::Points submap = candidateSubmap(keyframes_, candidate->keyframe, options_.submap_keyframes, k);
-	Verification v = verifyLoop(current.points, submap, candidate->match, earlier.odometry.inverse() * current.odometry,
-		current.path - earlier.path, options_);
+	const Eigen::Isometry3d odometry_relative = earlier.odometry.inverse() * current.odometry;
+	const double path_between = current.path - earlier.path;
+	std::optional<Verification> out_of_reach = rejectOutOfReach(candidate->match, odometry_relative, path_between, options_);
+	Verification v = out_of_reach
+		? std::move(*out_of_reach)
+		: verifyLoop(current.points, candidateSubmap(keyframes_, candidate->keyframe, options_.submap_keyframes, k),
+			  candidate->match, odometry_relative, path_between, options_);
 	v.record.frame = current.frame;
 	v.record.candidate_frame = earlier.frame;
 	if (v.record.accepted)

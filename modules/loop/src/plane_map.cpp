@@ -10,7 +10,10 @@ namespace
 {
 constexpr std::size_t kNormalNeighbours = 10;
 constexpr double kMaxNeighbourDistance2 = 1.5 * 1.5;  // [m^2] farther neighbours are another surface
-constexpr double kMaxThickness = 0.15;  // smallest over largest spread: more is no plane (a bush, an edge)
+// Smallest over the middle spread: more is no plane (a bush, an edge). Not tighter: the submap's
+// keyframes are placed by the odometry, a wall across the road is smeared by its local error (at
+// 0.15 with 1 % of scale drift, a simulated revisit of KITTI 00 closed 0 loops; at 0.3, 37).
+constexpr double kMaxThickness = 0.3;
 
 struct Cloud
 {
@@ -70,7 +73,8 @@ bool PlaneMap::normal(std::size_t index, Eigen::Vector3d& n) const
 					cov += d * d.transpose();
 				}
 			const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-			if (eig.eigenvalues()(0) <= kMaxThickness * kMaxThickness * eig.eigenvalues()(2))
+			// Thin across its second direction too: a ring's line of points has no plane normal.
+			if (eig.eigenvalues()(0) <= kMaxThickness * kMaxThickness * eig.eigenvalues()(1))
 			{
 				normals_[index] = eig.eigenvectors().col(0);
 				state_[index] = 1;

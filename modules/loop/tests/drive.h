@@ -1,11 +1,14 @@
 #pragma once
 // A drive through a synthetic world fed to LoopClosure: the true path, its drifting odometry, a scan
 // of the world at every true pose, and what the loop closure made of it.
+#include <vlo/loop/keyframe.h>
 #include <vlo/loop/loop_closure.h>
 
 #include "synthetic_places.h"
 
+#include <chrono>
 #include <functional>
+#include <thread>
 
 namespace vlo::loop::test
 {
@@ -37,8 +40,9 @@ inline Trajectory samplePath(const std::function<Eigen::Isometry3d(double)>& at,
 	return t;
 }
 
+/// `pause_ms` after each frame: an odometry slower than the loop thread (0: as fast as it goes).
 inline DriveResult drive(const World& world, const Trajectory& truth, double scale, double yaw_bias_per_metre,
-	const LoopOptions& options = LoopOptions{}, unsigned seed = 11)
+	const LoopOptions& options = LoopOptions{}, unsigned seed = 11, int pause_ms = 0)
 {
 	DriveResult r;
 	r.truth = truth;
@@ -47,9 +51,15 @@ inline DriveResult drive(const World& world, const Trajectory& truth, double sca
 	vehicle_T_lidar.translation() = Eigen::Vector3d(0.3, 0, 1.7);
 	std::mt19937 rng(seed);
 	LoopClosure loop(options);
+	// Only keyframes' scans are used: the others are left empty (and not rendered, for speed).
+	KeyframeSelector keyframe(options.keyframe_distance, options.keyframe_angle_deg * M_PI / 180);
 	for (std::size_t i = 0; i < truth.size(); ++i)
+	{
 		loop.addFrame(static_cast<long long>(i), truth[i].t, r.odometry[i].pose,
-			scanFrom(world, truth[i].pose * vehicle_T_lidar, rng), vehicle_T_lidar);
+			keyframe.take(r.odometry[i].pose) ? scanFrom(world, truth[i].pose * vehicle_T_lidar, rng) : PointCloud{},
+			vehicle_T_lidar);
+		if (pause_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(pause_ms));
+	}
 	loop.finish();
 	r.corrected = loop.corrected();
 	r.loops = loop.loops();

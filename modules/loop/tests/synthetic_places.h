@@ -13,7 +13,14 @@
 
 namespace vlo::loop::test
 {
-using World = std::vector<Eigen::Vector3d>;
+/// A rectangle o + [0,1] a + [0,1] b of a world, seen at `density` returns per square metre.
+struct Surface
+{
+	Eigen::Vector3d o, a, b;
+	double density;
+};
+/// Each scan samples its own points of the surfaces, as a LiDAR's beams hit other spots each time.
+using World = std::vector<Surface>;
 
 inline Eigen::Isometry3d pose2d(double x, double y, double yaw)
 {
@@ -23,55 +30,66 @@ inline Eigen::Isometry3d pose2d(double x, double y, double yaw)
 	return T;
 }
 
-/// Points on the rectangle o + [0,1] a + [0,1] b, `density` per square metre.
-inline void addRectangle(World& w, std::mt19937& rng, const Eigen::Vector3d& o, const Eigen::Vector3d& a,
-	const Eigen::Vector3d& b, double density)
+inline void addRectangle(World& w, const Eigen::Vector3d& o, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double density)
 {
-	std::uniform_real_distribution<double> u(0, 1);
-	const auto n = static_cast<int>(a.cross(b).norm() * density);
-	for (int i = 0; i < n; ++i) w.push_back(o + u(rng) * a + u(rng) * b);
+	w.push_back({o, a, b, density});
 }
 
 /// The four walls and the roof of a box on the ground.
-inline void addBox(World& w, std::mt19937& rng, const Eigen::Vector3d& lo, const Eigen::Vector3d& size, double density)
+inline void addBox(World& w, const Eigen::Vector3d& lo, const Eigen::Vector3d& size, double density)
 {
 	const Eigen::Vector3d ex(size.x(), 0, 0), ey(0, size.y(), 0), ez(0, 0, size.z());
-	addRectangle(w, rng, lo, ey, ez, density);
-	addRectangle(w, rng, lo + ex, ey, ez, density);
-	addRectangle(w, rng, lo, ex, ez, density);
-	addRectangle(w, rng, lo + ey, ex, ez, density);
-	addRectangle(w, rng, lo + ez, ex, ey, density);
+	addRectangle(w, lo, ey, ez, density);
+	addRectangle(w, lo + ex, ey, ez, density);
+	addRectangle(w, lo, ex, ez, density);
+	addRectangle(w, lo + ey, ex, ez, density);
+	addRectangle(w, lo + ez, ex, ey, density);
 }
 
-inline void addGround(World& w, std::mt19937& rng, double x0, double x1, double y0, double y1, double density)
+inline void addGround(World& w, double x0, double x1, double y0, double y1, double density)
 {
-	addRectangle(w, rng, {x0, y0, 0}, {x1 - x0, 0, 0}, {0, y1 - y0, 0}, density);
+	addRectangle(w, {x0, y0, 0}, {x1 - x0, 0, 0}, {0, y1 - y0, 0}, density);
 }
 
-/// Ground, and boxes (buildings, cars) and poles at random, none within `clear` of the drive's path.
-template <class OnPath>
-World randomCity(unsigned seed, double x0, double x1, double y0, double y1, int objects, OnPath near_path)
+/// Ground, and boxes (buildings, cars) and poles at random, none where near_path(corner, size) says.
+template <class NearPath>
+World randomCity(unsigned seed, double x0, double x1, double y0, double y1, int objects, NearPath near_path)
 {
 	std::mt19937 rng(seed);
 	std::uniform_real_distribution<double> ux(x0, x1), uy(y0, y1), u(0, 1);
 	World w;
-	addGround(w, rng, x0, x1, y0, y1, 0.5);
+	addGround(w, x0, x1, y0, y1, 1);
 	for (int placed = 0; placed < objects;)
 	{
 		const Eigen::Vector3d size(2 + 12 * u(rng), 2 + 12 * u(rng), 2 + 15 * u(rng));
 		const Eigen::Vector3d lo(ux(rng), uy(rng), 0);
 		if (near_path(lo.head<2>(), size.head<2>())) continue;
 		if (u(rng) < 0.3)
-			addBox(w, rng, lo, {0.3, 0.3, 4 + 4 * u(rng)}, 40);  // a pole
+			addBox(w, lo, {0.3, 0.3, 4 + 4 * u(rng)}, 40);  // a pole
 		else
-			addBox(w, rng, lo, size, 2);
+			addBox(w, lo, size, 4);
 		++placed;
 	}
 	return w;
 }
 
-/// The world's points within `range` of the sensor, in the sensor frame, with noise: a random half,
-/// another one each call.
+/// A street along x of identical buildings every `period` m on both sides, a pole in each gap, ground.
+inline World facadeStreet(double x0, double x1, double period)
+{
+	World world;
+	addGround(world, x0, x1, -20, 20, 1);
+	for (double x = x0; x < x1; x += period)
+	{
+		addBox(world, {x, 8, 0}, {period - 2, 10, 12}, 4);
+		addBox(world, {x, -18, 0}, {period - 2, 10, 12}, 4);
+		addBox(world, {x + period - 1, 6, 0}, {0.3, 0.3, 6}, 40);
+	}
+	return world;
+}
+
+/// Points of the world's surfaces within `range` (horizontal) of the sensor, in the sensor frame, with
+/// noise. The random numbers drawn do not depend on the pose, only which points are kept: one seed
+/// seen from one place turned on the spot gives the same points.
 inline PointCloud scanFrom(const World& world, const Eigen::Isometry3d& world_T_sensor, std::mt19937& rng,
 	double range = 80, double noise = 0.01)
 {
@@ -79,12 +97,16 @@ inline PointCloud scanFrom(const World& world, const Eigen::Isometry3d& world_T_
 	std::uniform_real_distribution<double> u(0, 1);
 	const Eigen::Isometry3d sensor_T_world = world_T_sensor.inverse();
 	PointCloud scan;
-	for (const auto& p : world)
+	for (const auto& s : world)
 	{
-		if (u(rng) < 0.5) continue;
-		const Eigen::Vector3d q = sensor_T_world * p + Eigen::Vector3d(n(rng), n(rng), n(rng));
-		if (q.head<2>().norm() > range) continue;
-		scan.push_back(LidarPoint{float(q.x()), float(q.y()), float(q.z()), 0.f});
+		const auto count = static_cast<int>(s.a.cross(s.b).norm() * s.density);
+		for (int i = 0; i < count; ++i)
+		{
+			const double ua = u(rng), ub = u(rng), nx = n(rng), ny = n(rng), nz = n(rng);
+			const Eigen::Vector3d q = sensor_T_world * (s.o + ua * s.a + ub * s.b) + Eigen::Vector3d(nx, ny, nz);
+			if (q.head<2>().norm() > range) continue;
+			scan.push_back(LidarPoint{float(q.x()), float(q.y()), float(q.z()), 0.f});
+		}
 	}
 	return scan;
 }

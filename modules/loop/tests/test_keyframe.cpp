@@ -1,4 +1,5 @@
-// Keyframes: which frames are taken, and their scans de-skewed, thinned and in the vehicle frame.
+// Keyframes: which frames are taken, and their scans de-skewed, thinned and in the vehicle frame; and
+// LoopClosure's life: options checked, the thread joined without finish().
 #include <gtest/gtest.h>
 #include <vlo/loop/keyframe.h>
 #include <vlo/loop/loop_closure.h>
@@ -46,4 +47,11 @@ TEST(LoopClosure, WithoutFinishTheDestructorJoins)
 	LoopClosure loop{LoopOptions{}};
 	loop.addFrame(0, 0.0, pose2d(0, 0, 0), PointCloud{}, Eigen::Isometry3d::Identity());
 	EXPECT_EQ(loop.keyframes(), 1u);
+}
+
+TEST(LoopClosure, RefusesOptionsOutOfRange)
+{
+	LoopOptions bad;
+	bad.descriptor_rings = 1;
+	EXPECT_THROW(LoopClosure{bad}, OptionError);
 }

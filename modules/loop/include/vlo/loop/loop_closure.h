@@ -43,7 +43,7 @@ class LoopClosure
 
 	/// Every frame of the odometry, in order: its pose (vehicle in the odometry's world) and its scan
 	/// (LiDAR frame, with point times when it has them). Returns quickly: a keyframe's scan is
-	/// de-skewed with the odometry's motion, thinned and queued for the loop thread.
+	/// copied and queued; the loop thread thins it and de-skews it with the odometry's motion.
 	void addFrame(long long frame, double t, const Eigen::Isometry3d& world_T_vehicle, const PointCloud& scan,
 		const Eigen::Isometry3d& vehicle_T_lidar);
 

@@ -10,6 +10,7 @@
 #include <vlo/loop/point_to_plane.h>
 #include <vlo/loop/scan_context.h>
 
+#include <optional>
 #include <vector>
 
 namespace vlo::loop
@@ -23,6 +24,15 @@ struct Verification
 	LoopRecord record;  ///< frames, descriptor, registration, gates' figures, accepted or why not
 	Matrix6d information = Matrix6d::Zero();  ///< of the loop edge (pose graph residual), when accepted
 };
+
+/// The drift gate's limit [m] for `path_between` metres of odometry between the visits.
+double maxDrift(double path_between, const LoopOptions& options);
+
+/// A candidate that the odometry puts farther away than the drift gate allows plus what a
+/// registration from the descriptor's guess (the same position) can reach: rejected for its drift
+/// without registering (a repeated place elsewhere, most candidates of a drive without revisits).
+std::optional<Verification> rejectOutOfReach(const DescriptorMatch& match,
+	const Eigen::Isometry3d& odometry_candidate_T_current, double path_between, const LoopOptions& options);
 
 /// `odometry_candidate_T_current`: the relative pose the odometry gives; `path_between` [m]: the
 /// odometry's path from the candidate to the current keyframe.

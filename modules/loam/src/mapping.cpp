@@ -4,7 +4,10 @@
 #include <vlo/loam/near_points.h>
 #include <vlo/loam/voxel_filter.h>
 
+#include <vlo/core/units.h>
+
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
@@ -18,10 +21,20 @@ ScanToMap::ScanToMap(const MappingOptions& o)
 {
 }
 
+const ScanPoints& ScanToMap::mapEdges(const FeatureSet& f, ScanPoints& creases) const
+{
+	if (opt_.silhouette_edges) return f.less_sharp;
+	creases.clear();
+	for (std::size_t i = 0; i < f.less_sharp.size(); ++i)
+		if (i >= f.less_sharp_silhouette.size() || !f.less_sharp_silhouette[i]) creases.push_back(f.less_sharp[i]);
+	return creases;
+}
+
 ScanToMap::Input ScanToMap::prepare(const FeatureSet& f) const
 {
 	Input in;
-	if (opt_.edges != "off") in.edges = voxelDownsample(f.less_sharp, static_cast<float>(opt_.edge_leaf));
+	ScanPoints creases;
+	if (opt_.edges != "off") in.edges = voxelDownsample(mapEdges(f, creases), static_cast<float>(opt_.edge_leaf));
 	in.planes = voxelDownsample(f.less_flat, static_cast<float>(opt_.plane_leaf));
 	return in;
 }
@@ -101,12 +114,17 @@ void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Mat
 	Eigen::Vector3f nn[32];
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
 	Eigen::Vector3d c;
+	// The LiDAR's spin axis in the map; a line's elevation is its angle out of the plane normal to it.
+	const Eigen::Vector3d axis = T.linear().col(2);
+	const double min_sin = opt_.min_line_elevation_deg > 0 ? std::sin(opt_.min_line_elevation_deg * kRadPerDeg) : -1.0;
 	for (const Eigen::Vector3f& p : in.edges)
 	{
 		if (edge_map_.knn(R * p + t, k, static_cast<float>(opt_.max_nn_distance), nn) < k) continue;
 		fit(nn, k, c, es);
 		if (!lineLike(es, opt_.edge_eigen_ratio)) continue;
-		out.edges.push_back(EdgeMatch{p.cast<double>(), c, es.eigenvectors().col(2)});
+		const Eigen::Vector3d u = es.eigenvectors().col(2);
+		if (std::abs(u.dot(axis)) < min_sin) continue;
+		out.edges.push_back(EdgeMatch{p.cast<double>(), c, u});
 	}
 }
 
@@ -238,7 +256,8 @@ void ScanToMap::insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr,
 	std::vector<Eigen::Vector3f> w;
 	if (opt_.edges != "off")
 	{
-		w = voxelDownsample(f.less_sharp, static_cast<float>(opt_.map_edge_resolution));
+		ScanPoints creases;
+		w = voxelDownsample(mapEdges(f, creases), static_cast<float>(opt_.map_edge_resolution));
 		for (Eigen::Vector3f& p : w) p = R * p + t;
 		w.erase(std::remove_if(w.begin(), w.end(), [&](const Eigen::Vector3f& p) { return near_arrivals.near(p); }), w.end());
 		edge_map_.insert(w);

@@ -54,6 +54,37 @@ TEST(Map, OnePointPerCellAndFarVoxelsDropped)
 	EXPECT_EQ(all.size(), 64u);
 }
 
+TEST(Map, FlatLinesAndSilhouettesStayOutOfScanToMapWhenAsked)
+{
+	// Edge points of a vertical line 5 m ahead, of a flat line along the road 3 m to the left and
+	// 1.5 m down (a curb), and of a second vertical line marked as a silhouette, 0.21 m apart.
+	FeatureSet f;
+	const auto add = [&](const Eigen::Vector3f& p, bool silhouette) {
+		ScanPoint q;
+		q.p = p;
+		f.less_sharp.push_back(q);
+		f.less_sharp_silhouette.push_back(silhouette ? 1 : 0);
+	};
+	for (int i = 0; i < 12; ++i) add(Eigen::Vector3f(5.1f, 0.1f, -1.4f + 0.21f * i), false);
+	for (int i = 0; i < 16; ++i) add(Eigen::Vector3f(3.1f + 0.21f * i, 3.1f, -1.5f), false);
+	for (int i = 0; i < 12; ++i) add(Eigen::Vector3f(5.1f, -3.1f, -1.4f + 0.21f * i), true);
+	const ScanToMap::Input probes{{Eigen::Vector3f(5.15f, 0.1f, 0.1f), Eigen::Vector3f(5.0f, 3.15f, -1.5f), Eigen::Vector3f(5.15f, -3.1f, 0.1f)}, {}};
+	const auto matches = [&](bool silhouettes, double min_elevation_deg) {
+		MappingOptions o;
+		o.silhouette_edges = silhouettes;
+		o.min_line_elevation_deg = min_elevation_deg;
+		ScanToMap mapper(o);
+		mapper.insert(f, Eigen::Isometry3d::Identity());
+		Matches m;
+		mapper.findMatches(probes, Eigen::Isometry3d::Identity(), true, m);
+		return std::make_pair(mapper.edgeMap().numPoints(), m.edges.size());
+	};
+	EXPECT_EQ(matches(true, 0), std::make_pair(std::size_t{40}, std::size_t{3}));
+	EXPECT_EQ(matches(true, 53), std::make_pair(std::size_t{40}, std::size_t{2}));  // the curb's line is flat
+	EXPECT_EQ(matches(false, 0), std::make_pair(std::size_t{28}, std::size_t{2}));  // no silhouette mapped
+	EXPECT_EQ(matches(false, 53), std::make_pair(std::size_t{28}, std::size_t{1}));
+}
+
 TEST(Map, ScanToMapStaysBoundedOverFiveKilometres)
 {
 	// A scan-like point set (ground and two walls within 60 m) inserted every 5 m along a 5 km

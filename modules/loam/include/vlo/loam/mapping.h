@@ -63,6 +63,8 @@ class ScanToMap
 	double planeFit(const Input& in, const Eigen::Isometry3d& T) const;
 
    private:
+	/// The scan's edge points that scan-to-map matches and maps: all, or its creases (in `creases`).
+	const ScanPoints& mapEdges(const FeatureSet& f, ScanPoints& creases) const;
 	/// Appends the line matches of `in` at pose T to out.edges.
 	void findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
 	/// Information on the translation along its weakest direction of these matches at T (robust-weighted

@@ -54,35 +54,42 @@ TEST(Map, OnePointPerCellAndFarVoxelsDropped)
 	EXPECT_EQ(all.size(), 64u);
 }
 
-TEST(Map, FlatLinesAndSilhouettesStayOutOfScanToMapWhenAsked)
+TEST(Map, LinesThatDependOnTheViewAreMatchedOnlyFromNearby)
 {
-	// Edge points of a vertical line 5 m ahead, of a flat line along the road 3 m to the left and
-	// 1.5 m down (a curb), and of a second vertical line marked as a silhouette, 0.21 m apart.
+	// Edge points (map frame) of a vertical crease line 5 m ahead, of a flat line along the road 3 m
+	// to the left and 1.5 m down (a curb), and of a second vertical line on a silhouette, 0.21 m
+	// apart, seen from 4 m behind the pose the probes are matched at.
 	FeatureSet f;
 	const auto add = [&](const Eigen::Vector3f& p, bool silhouette) {
 		ScanPoint q;
-		q.p = p;
+		q.p = p + Eigen::Vector3f(4, 0, 0);
 		f.less_sharp.push_back(q);
 		f.less_sharp_silhouette.push_back(silhouette ? 1 : 0);
 	};
 	for (int i = 0; i < 12; ++i) add(Eigen::Vector3f(5.1f, 0.1f, -1.4f + 0.21f * i), false);
 	for (int i = 0; i < 16; ++i) add(Eigen::Vector3f(3.1f + 0.21f * i, 3.1f, -1.5f), false);
 	for (int i = 0; i < 12; ++i) add(Eigen::Vector3f(5.1f, -3.1f, -1.4f + 0.21f * i), true);
-	const ScanToMap::Input probes{{Eigen::Vector3f(5.15f, 0.1f, 0.1f), Eigen::Vector3f(5.0f, 3.15f, -1.5f), Eigen::Vector3f(5.15f, -3.1f, 0.1f)}, {}};
-	const auto matches = [&](bool silhouettes, double min_elevation_deg) {
+	Eigen::Isometry3d seen_from = Eigen::Isometry3d::Identity();
+	seen_from.translation().x() = -4;
+	ScanToMap::Input probes;
+	probes.edges = {Eigen::Vector3f(5.15f, 0.1f, 0.1f), Eigen::Vector3f(5.0f, 3.15f, -1.5f), Eigen::Vector3f(5.15f, -3.1f, 0.1f)};
+	probes.edge_silhouette = {0, 0, 0};
+	const auto matches = [&](double reach, double min_elevation_deg, bool silhouettes = true) {
 		MappingOptions o;
-		o.silhouette_edges = silhouettes;
+		o.view_dependent_reach = reach;
 		o.min_line_elevation_deg = min_elevation_deg;
+		o.view_dependent_silhouettes = silhouettes;
 		ScanToMap mapper(o);
-		mapper.insert(f, Eigen::Isometry3d::Identity());
+		mapper.insert(f, seen_from);
 		Matches m;
 		mapper.findMatches(probes, Eigen::Isometry3d::Identity(), true, m);
-		return std::make_pair(mapper.edgeMap().numPoints(), m.edges.size());
+		return m.edges.size();
 	};
-	EXPECT_EQ(matches(true, 0), std::make_pair(std::size_t{40}, std::size_t{3}));
-	EXPECT_EQ(matches(true, 53), std::make_pair(std::size_t{40}, std::size_t{2}));  // the curb's line is flat
-	EXPECT_EQ(matches(false, 0), std::make_pair(std::size_t{28}, std::size_t{2}));  // no silhouette mapped
-	EXPECT_EQ(matches(false, 53), std::make_pair(std::size_t{28}, std::size_t{1}));
+	EXPECT_EQ(matches(0, 53), 3u);  // any reach (A-LOAM)
+	EXPECT_EQ(matches(5, 53), 3u);  // seen from 4 m: near enough
+	EXPECT_EQ(matches(3, 53), 1u);  // too far for the curb's flat line and the silhouette
+	EXPECT_EQ(matches(3, 0), 2u);  // no line counts as flat: only the silhouette goes
+	EXPECT_EQ(matches(3, 53, false), 2u);  // silhouettes as any line: only the curb goes
 }
 
 TEST(Map, ScanToMapStaysBoundedOverFiveKilometres)

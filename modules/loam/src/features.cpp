@@ -132,6 +132,25 @@ bool FeatureExtractor::isLocalMax(int i, int n) const
 	return true;
 }
 
+// An object's outline against a farther background (a silhouette) is where the beam leaves the
+// object's body: on a rounded body (a car, a pole, a trunk) that place moves round it as the sensor
+// moves, so it is no fixed 3D line. A crease (a corner, both sides seen) has no such jump.
+bool FeatureExtractor::onSilhouette(const ScanPoint* p, int n, int i) const
+{
+	const int W = opt_.curvature_half_window;
+	const float gap = static_cast<float>(opt_.occlusion_gap_sq);
+	for (int j = std::max(0, i - W - 1); j < std::min(n - 1, i + W + 1); ++j)
+	{
+		if ((p[j + 1].p - p[j].p).squaredNorm() <= gap) continue;
+		// The side of the jump that i is on must be the nearer one.
+		const bool i_after = j + 1 <= i;
+		const float near_sq = (i_after ? p[j + 1] : p[j]).p.squaredNorm();
+		const float far_sq = (i_after ? p[j] : p[j + 1]).p.squaredNorm();
+		if (near_sq < far_sq) return true;
+	}
+	return false;
+}
+
 void FeatureExtractor::extractRing(const ScanPoint* p, int n, FeatureSet& out)
 {
 	const int W = opt_.curvature_half_window;
@@ -178,6 +197,7 @@ void FeatureExtractor::extractRing(const ScanPoint* p, int n, FeatureSet& out)
 			label_[i] = n_sharp <= opt_.max_sharp ? 2 : 1;
 			if (label_[i] == 2) out.sharp.push_back(p[i]);
 			out.less_sharp.push_back(p[i]);
+			out.less_sharp_silhouette.push_back(onSilhouette(p, n, i) ? 1 : 0);
 			suppressNeighbours(p, n, i);
 		}
 

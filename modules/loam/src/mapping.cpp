@@ -4,7 +4,10 @@
 #include <vlo/loam/near_points.h>
 #include <vlo/loam/voxel_filter.h>
 
+#include <vlo/core/units.h>
+
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
@@ -18,10 +21,27 @@ ScanToMap::ScanToMap(const MappingOptions& o)
 {
 }
 
+std::size_t ScanToMap::downsampledEdges(const FeatureSet& f, double leaf, std::vector<Eigen::Vector3f>& out) const
+{
+	ScanPoints creases, silhouettes;
+	for (std::size_t i = 0; i < f.less_sharp.size(); ++i)
+		(i < f.less_sharp_silhouette.size() && f.less_sharp_silhouette[i] ? silhouettes : creases).push_back(f.less_sharp[i]);
+	out = voxelDownsample(creases, static_cast<float>(leaf));
+	const std::size_t n_creases = out.size();
+	const std::vector<Eigen::Vector3f> s = voxelDownsample(silhouettes, static_cast<float>(leaf));
+	out.insert(out.end(), s.begin(), s.end());
+	return n_creases;
+}
+
 ScanToMap::Input ScanToMap::prepare(const FeatureSet& f) const
 {
 	Input in;
-	if (opt_.edges != "off") in.edges = voxelDownsample(f.less_sharp, static_cast<float>(opt_.edge_leaf));
+	if (opt_.edges != "off")
+	{
+		const std::size_t n_creases = downsampledEdges(f, opt_.edge_leaf, in.edges);
+		in.edge_silhouette.assign(in.edges.size(), 1);
+		std::fill(in.edge_silhouette.begin(), in.edge_silhouette.begin() + n_creases, 0);
+	}
 	in.planes = voxelDownsample(f.less_flat, static_cast<float>(opt_.plane_leaf));
 	return in;
 }
@@ -93,6 +113,25 @@ bool ScanToMap::fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMat
 	return true;
 }
 
+bool ScanToMap::seenFromTooFar(const Eigen::Vector3d& u, bool scan_silhouette, const std::uint32_t* tags, int k,
+	const Eigen::Isometry3d& T) const
+{
+	if (opt_.view_dependent_reach <= 0) return false;
+	// The LiDAR's spin axis in the map; a line's elevation is its angle out of the plane normal to it.
+	bool depends_on_view = std::abs(u.dot(T.linear().col(2))) < std::sin(opt_.min_line_elevation_deg * kRadPerDeg);
+	if (opt_.view_dependent_silhouettes)
+	{
+		depends_on_view = depends_on_view || scan_silhouette;
+		for (int i = 0; i < k; ++i) depends_on_view = depends_on_view || (tags[i] & 1u);
+	}
+	if (!depends_on_view) return false;
+	const Eigen::Vector3f here = T.translation().cast<float>();
+	const float reach2 = static_cast<float>(opt_.view_dependent_reach * opt_.view_dependent_reach);
+	for (int i = 0; i < k; ++i)
+		if ((scan_origins_[tags[i] >> 1] - here).squaredNorm() > reach2) return true;
+	return false;
+}
+
 void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const
 {
 	const Eigen::Matrix3f R = T.linear().cast<float>();
@@ -101,12 +140,16 @@ void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Mat
 	Eigen::Vector3f nn[32];
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
 	Eigen::Vector3d c;
-	for (const Eigen::Vector3f& p : in.edges)
+	std::uint32_t tags[32];
+	for (std::size_t e = 0; e < in.edges.size(); ++e)
 	{
-		if (edge_map_.knn(R * p + t, k, static_cast<float>(opt_.max_nn_distance), nn) < k) continue;
+		const Eigen::Vector3f& p = in.edges[e];
+		if (edge_map_.knn(R * p + t, k, static_cast<float>(opt_.max_nn_distance), nn, tags) < k) continue;
 		fit(nn, k, c, es);
 		if (!lineLike(es, opt_.edge_eigen_ratio)) continue;
-		out.edges.push_back(EdgeMatch{p.cast<double>(), c, es.eigenvectors().col(2)});
+		const Eigen::Vector3d u = es.eigenvectors().col(2);
+		if (seenFromTooFar(u, e < in.edge_silhouette.size() && in.edge_silhouette[e], tags, k, T)) continue;
+		out.edges.push_back(EdgeMatch{p.cast<double>(), c, u});
 	}
 }
 
@@ -238,10 +281,18 @@ void ScanToMap::insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr,
 	std::vector<Eigen::Vector3f> w;
 	if (opt_.edges != "off")
 	{
-		w = voxelDownsample(f.less_sharp, static_cast<float>(opt_.map_edge_resolution));
-		for (Eigen::Vector3f& p : w) p = R * p + t;
-		w.erase(std::remove_if(w.begin(), w.end(), [&](const Eigen::Vector3f& p) { return near_arrivals.near(p); }), w.end());
-		edge_map_.insert(w);
+		const std::size_t n_creases = downsampledEdges(f, opt_.map_edge_resolution, w);
+		std::vector<std::uint32_t> edge_tags;
+		std::size_t n = 0;
+		for (std::size_t i = 0; i < w.size(); ++i)
+		{
+			const Eigen::Vector3f q = R * w[i] + t;
+			if (near_arrivals.near(q)) continue;
+			w[n++] = q;
+			edge_tags.push_back((scans_inserted_ << 1) | (i < n_creases ? 0u : 1u));
+		}
+		w.resize(n);
+		edge_map_.insert(w, &edge_tags);
 		edge_map_.removeFar(t, radius);
 	}
 	// Planes: merged along each ring, so every point keeps its scan line (frame, ring) as a tag.
@@ -266,6 +317,7 @@ void ScanToMap::insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr,
 	}
 	plane_map_.insert(w, &tags);
 	plane_map_.removeFar(t, radius);
+	scan_origins_.push_back(t);
 	++scans_inserted_;
 }
 

@@ -142,6 +142,48 @@ TEST(Features, OccludedSideOfADepthJumpIsNeverAnEdge)
 	EXPECT_GT(sharpOnWallNearPole(false), 0);
 }
 
+TEST(Features, EdgesOnAPolesOutlineAreSilhouettesTheRoomsCornersCreases)
+{
+	// The pole's outline against the wall 5 m behind moves round the pole as the sensor moves; the
+	// room's corners (both walls seen, no jump in range) are fixed lines. Occluded points and every
+	// point above the threshold (not only the peaks, which here are the wall's) are kept, so both
+	// sides of the jump give edges: the wall's are its far side, no silhouette.
+	World room = boxRoom();
+	room.cylinders.push_back(Cylinder{Eigen::Vector2d(5.0, 0.5), 0.15, 0.0, 4.0});
+	const Eigen::Isometry3d T = sensorPose();
+	LoamOptions o = vlp16Options();
+	o.features.reject_occluded = false;
+	o.features.sharp_local_max = false;
+	ScanPreprocessor pre(o.scan);
+	FeatureExtractor fx(o.features);
+	const FeatureSet f = fx.extract(pre.process(scan(room, vlp16(), T)));
+	ASSERT_EQ(f.less_sharp_silhouette.size(), f.less_sharp.size());
+	int on_pole = 0, on_wall_behind = 0, at_corner = 0;
+	for (std::size_t i = 0; i < f.less_sharp.size(); ++i)
+	{
+		const Eigen::Vector3d w = T * f.less_sharp[i].p.cast<double>();
+		const int flag = f.less_sharp_silhouette[i];
+		if (std::hypot(w.x() - 5.0, w.y() - 0.5) < 0.3)
+		{
+			++on_pole;
+			EXPECT_EQ(flag, 1) << w.transpose();
+		}
+		if (std::abs(w.x() - kHx) < 0.05 && std::abs(w.y() - 0.5) < 2.5)
+		{
+			++on_wall_behind;
+			EXPECT_EQ(flag, 0) << w.transpose();
+		}
+		if (distanceToCorner(w) < 0.3)
+		{
+			++at_corner;
+			EXPECT_EQ(flag, 0) << w.transpose();
+		}
+	}
+	EXPECT_GT(on_pole, 8);
+	EXPECT_GT(on_wall_behind, 8);
+	EXPECT_GT(at_corner, 8);
+}
+
 namespace
 {
 // One ring on a round wall 10 m away, a return every 0.2 deg, but none in [90, 100) deg: the

@@ -54,6 +54,44 @@ TEST(Map, OnePointPerCellAndFarVoxelsDropped)
 	EXPECT_EQ(all.size(), 64u);
 }
 
+TEST(Map, LinesThatDependOnTheViewAreMatchedOnlyFromNearby)
+{
+	// Edge points (map frame) of a vertical crease line 5 m ahead, of a flat line along the road 3 m
+	// to the left and 1.5 m down (a curb), and of a second vertical line on a silhouette, 0.21 m
+	// apart, seen from 4 m behind the pose the probes are matched at.
+	FeatureSet f;
+	const auto add = [&](const Eigen::Vector3f& p, bool silhouette) {
+		ScanPoint q;
+		q.p = p + Eigen::Vector3f(4, 0, 0);
+		f.less_sharp.push_back(q);
+		f.less_sharp_silhouette.push_back(silhouette ? 1 : 0);
+	};
+	for (int i = 0; i < 12; ++i) add(Eigen::Vector3f(5.1f, 0.1f, -1.4f + 0.21f * i), false);
+	for (int i = 0; i < 16; ++i) add(Eigen::Vector3f(3.1f + 0.21f * i, 3.1f, -1.5f), false);
+	for (int i = 0; i < 12; ++i) add(Eigen::Vector3f(5.1f, -3.1f, -1.4f + 0.21f * i), true);
+	Eigen::Isometry3d seen_from = Eigen::Isometry3d::Identity();
+	seen_from.translation().x() = -4;
+	ScanToMap::Input probes;
+	probes.edges = {Eigen::Vector3f(5.15f, 0.1f, 0.1f), Eigen::Vector3f(5.0f, 3.15f, -1.5f), Eigen::Vector3f(5.15f, -3.1f, 0.1f)};
+	probes.edge_silhouette = {0, 0, 0};
+	const auto matches = [&](double reach, double min_elevation_deg, bool silhouettes = true) {
+		MappingOptions o;
+		o.view_dependent_reach = reach;
+		o.min_line_elevation_deg = min_elevation_deg;
+		o.view_dependent_silhouettes = silhouettes;
+		ScanToMap mapper(o);
+		mapper.insert(f, seen_from);
+		Matches m;
+		mapper.findMatches(probes, Eigen::Isometry3d::Identity(), true, m);
+		return m.edges.size();
+	};
+	EXPECT_EQ(matches(0, 53), 3u);  // any reach (A-LOAM)
+	EXPECT_EQ(matches(5, 53), 3u);  // seen from 4 m: near enough
+	EXPECT_EQ(matches(3, 53), 1u);  // too far for the curb's flat line and the silhouette
+	EXPECT_EQ(matches(3, 0), 2u);  // no line counts as flat: only the silhouette goes
+	EXPECT_EQ(matches(3, 53, false), 2u);  // silhouettes as any line: only the curb goes
+}
+
 TEST(Map, ScanToMapStaysBoundedOverFiveKilometres)
 {
 	// A scan-like point set (ground and two walls within 60 m) inserted every 5 m along a 5 km

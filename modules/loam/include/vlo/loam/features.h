@@ -27,6 +27,7 @@ class FeatureExtractor
 	void markAzimuthGaps(const ScanPoint* p, int n);
 	void suppressNeighbours(const ScanPoint* p, int n, int i);
 	bool isLocalMax(int i, int n) const;
+	bool onSilhouette(const ScanPoint* p, int n, int i) const;
 
 	FeatureOptions opt_;
 	std::vector<float> curv_;  ///< per point of the current ring

@@ -23,6 +23,7 @@ class ScanToMap
 	struct Input
 	{
 		std::vector<Eigen::Vector3f> edges, planes;
+		std::vector<std::uint8_t> edge_silhouette;  ///< per edge: 1 on a silhouette (FeatureSet)
 	};
 	struct Result
 	{
@@ -63,6 +64,12 @@ class ScanToMap
 	double planeFit(const Input& in, const Eigen::Isometry3d& T) const;
 
    private:
+	/// The scan's edge points downsampled to `leaf`, creases first, then silhouettes: how many are creases.
+	std::size_t downsampledEdges(const FeatureSet& f, double leaf, std::vector<Eigen::Vector3f>& out) const;
+	/// Whether a line match depends on the view (a silhouette in the scan or among the map points
+	/// fitted, or a flat line) and some of its map points were seen from beyond the reach.
+	bool seenFromTooFar(const Eigen::Vector3d& u, bool scan_silhouette, const std::uint32_t* tags, int k,
+		const Eigen::Isometry3d& T) const;
 	/// Appends the line matches of `in` at pose T to out.edges.
 	void findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
 	/// Information on the translation along its weakest direction of these matches at T (robust-weighted
@@ -80,6 +87,8 @@ class ScanToMap
 	MappingOptions opt_;
 	VoxelMap edge_map_, plane_map_;
 	std::uint32_t scans_inserted_ = 0;  ///< scan-line tags: (scan << 8) | ring
+	/// Where the sensor stood at each scan inserted: edge map tags are (scan << 1) | silhouette.
+	std::vector<Eigen::Vector3f> scan_origins_;
 	std::optional<FreeSpace> last_free_;  ///< the last carving scan's free space ...
 	Eigen::Isometry3d T_map_last_ = Eigen::Isometry3d::Identity();  ///< ... and its pose
 };

@@ -124,6 +124,17 @@ struct MappingOptions : public OptionSet
 	int knn = 8;  ///< A-LOAM: 5; 8 lets fewer false lines through (doc/LOAM.md step 4)
 	double max_nn_distance = 1.0;  ///< all knn neighbours must be this close [m]
 	double edge_eigen_ratio = 3.0;  ///< line if largest eigenvalue > ratio * middle one
+	/// Lines that depend on the view are matched only against map points seen from nearby
+	/// (doc/LOAM.md "Known limits"): a ring (a cone about the spin axis) meets a line at most as
+	/// steeply as the line rises out of the plane normal to that axis, so where it meets a flat line
+	/// (a curb, a sill) moves with the sensor. Seen from within a few metres (as scan-to-scan sees
+	/// them) such lines hold; from the map's whole past they pulled a real drive short. Flat: below
+	/// this elevation [deg] ...
+	double min_line_elevation_deg = 53.0;
+	double view_dependent_reach = 3.0;  ///< ... nearby: within this of the current position [m] (0: any)
+	/// Silhouettes (an outline against a farther surface, FeatureSet) depend on the view too: they
+	/// move round a rounded body as the sensor moves. Not by default: tree trunks need them.
+	bool view_dependent_silhouettes = false;
 	double plane_max_distance = 0.05;  ///< plane if every neighbour is this close to it [m]
 	double plane_line_ratio = 10.0;  ///< not a plane if largest eigenvalue > ratio * middle (a line)
 	int min_edge_correspondences = 0, min_plane_correspondences = 50;  ///< fewer: keep the odometry pose (edges are optional: some scenes have none)

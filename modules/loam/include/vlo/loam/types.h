@@ -41,6 +41,9 @@ struct FeatureSet
 {
 	ScanPoints sharp;  ///< strongest edge points: matched against the reference
 	ScanPoints less_sharp;  ///< edge points the next scan matches against (sharp included)
+	/// Per less_sharp point: 1 where its curvature window spans a jump to a farther surface, i.e.
+	/// the point is on an object's outline against what lies behind (a silhouette), not on a crease.
+	std::vector<std::uint8_t> less_sharp_silhouette;
 	ScanPoints flat;  ///< flattest points: matched against the reference
 	ScanPoints less_flat;  ///< plane points the next scan matches against (downsampled)
 	int n_rings = 0;  ///< rings of the scan (0: unknown, the ring model's)

@@ -4,7 +4,10 @@
 // optimised from the odometry as LoopClosure::finish() does, single-threaded.
 //   build/bin/bench_loop
 // Counters: Ceres iterations, and the RMS position error of the keyframes before and after.
+// BM_PlaceQuery: one keyframe's place recognition (its Scan Context, the ring keys of 2000 earlier
+// keyframes, 10 full descriptors), [loop] query_shift off (0) and on (3.5 m: three queries).
 #include <benchmark/benchmark.h>
+#include <vlo/loop/place_recognition.h>
 #include <vlo/loop/pose_graph.h>
 
 #include <cmath>
@@ -101,6 +104,29 @@ void BM_FinalOptimisation4000Keyframes(benchmark::State& state)
 	state.counters["rms_after_m"] = after;
 }
 BENCHMARK(BM_FinalOptimisation4000Keyframes)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+/// A keyframe's thinned points: ground and walls at random within 80 m.
+ScanPoints randomKeyframe(std::mt19937& rng, int points)
+{
+	std::uniform_real_distribution<float> u(-80.f, 80.f), h(-2.f, 10.f);
+	ScanPoints out;
+	for (int i = 0; i < points; ++i) out.emplace_back(u(rng), u(rng), i % 2 ? -2.f : h(rng));
+	return out;
+}
+
+void BM_PlaceQuery(benchmark::State& state)
+{
+	PlaceRecognitionParams params;
+	params.query_shift = static_cast<double>(state.range(0)) / 10;
+	PlaceDatabase places(params);
+	std::mt19937 rng(2);
+	constexpr int kPoints = 20000;
+	double path = 0;
+	for (int k = 0; k < 2000; ++k, path += 2) places.addAndQuery(randomKeyframe(rng, kPoints), path);
+	const ScanPoints query = randomKeyframe(rng, kPoints);
+	for (auto _ : state) benchmark::DoNotOptimize(places.addAndQuery(query, path += 2));
+}
+BENCHMARK(BM_PlaceQuery)->Arg(0)->Arg(35)->Unit(benchmark::kMillisecond);
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -17,6 +17,7 @@ PlaceRecognitionParams placeParams(const LoopOptions& o)
 	p.candidates = o.candidates;
 	p.max_distance = o.max_descriptor_distance;
 	p.min_revisit_path = o.min_revisit_path;
+	p.query_shift = o.query_shift;
 	return p;
 }
 }  // namespace

@@ -14,6 +14,7 @@ void LoopOptions::declare(OptionTable& t)
 	t.add("candidates", candidates, ">= 1", "nearest ring keys whose descriptors are compared");
 	t.add("max_descriptor_distance", max_descriptor_distance, "(0, 1]", "larger descriptor distances are no candidate");
 	t.add("min_revisit_path", min_revisit_path, ">= 0", "path driven between two visits of a place, at least [m]");
+	t.add("query_shift", query_shift, ">= 0", "each keyframe also queried from this far to its left and right (another lane); 0 = off [m]");
 	t.add("scan_voxel", scan_voxel, "> 0", "keyframe scans are thinned to this voxel [m]");
 	t.add("submap_keyframes", submap_keyframes, ">= 0", "keyframes on each side of the candidate in its submap");
 	t.add("inlier_distance", inlier_distance, "> 0", "a registered point within this of the submap's surface is an inlier [m]");

@@ -5,14 +5,9 @@
 
 namespace vlo::loop
 {
-std::optional<PlaceCandidate> PlaceDatabase::addAndQuery(const ScanPoints& points, double path)
+std::optional<PlaceCandidate> PlaceDatabase::query(const ScanContext& sc, std::size_t eligible) const
 {
-	ScanContext sc = makeScanContext(points, params_.descriptor);
-	Eigen::VectorXd key = ringKey(sc);
-
-	// Paths grow with the index: the places left long enough ago are a prefix.
-	const auto eligible = static_cast<std::size_t>(
-		std::upper_bound(paths_.begin(), paths_.end(), path - params_.min_revisit_path) - paths_.begin());
+	const Eigen::VectorXd key = ringKey(sc);
 	std::vector<std::pair<double, std::size_t>> by_key;
 	by_key.reserve(eligible);
 	for (std::size_t i = 0; i < eligible; ++i) by_key.emplace_back((keys_[i] - key).squaredNorm(), i);
@@ -26,8 +21,28 @@ std::optional<PlaceCandidate> PlaceDatabase::addAndQuery(const ScanPoints& point
 		const DescriptorMatch m = compareScanContexts(sc, contexts_[i]);
 		if (m.distance < params_.max_distance && (!best || m.distance < best->match.distance)) best = PlaceCandidate{i, m};
 	}
+	return best;
+}
+
+std::optional<PlaceCandidate> PlaceDatabase::addAndQuery(const ScanPoints& points, double path)
+{
+	ScanContext sc = makeScanContext(points, params_.descriptor);
+	// Paths grow with the index: the places left long enough ago are a prefix.
+	const auto eligible = static_cast<std::size_t>(
+		std::upper_bound(paths_.begin(), paths_.end(), path - params_.min_revisit_path) - paths_.begin());
+	std::optional<PlaceCandidate> best = query(sc, eligible);
+	if (params_.query_shift > 0)
+		for (const double y : {params_.query_shift, -params_.query_shift})
+		{
+			std::optional<PlaceCandidate> shifted = query(makeScanContext(points, params_.descriptor, y), eligible);
+			if (shifted && (!best || shifted->match.distance < best->match.distance))
+			{
+				best = shifted;
+				best->match.viewpoint_y = y;
+			}
+		}
+	keys_.push_back(ringKey(sc));
 	contexts_.push_back(std::move(sc));
-	keys_.push_back(std::move(key));
 	paths_.push_back(path);
 	return best;
 }

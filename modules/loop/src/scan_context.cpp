@@ -4,16 +4,17 @@
 
 namespace vlo::loop
 {
-ScanContext makeScanContext(const std::vector<Eigen::Vector3f>& points, const ScanContextParams& params)
+ScanContext makeScanContext(const std::vector<Eigen::Vector3f>& points, const ScanContextParams& params, double viewpoint_y)
 {
 	ScanContext sc = ScanContext::Zero(params.rings, params.sectors);
 	const double ring_width = params.range / params.rings, sector_width = 2 * M_PI / params.sectors;
 	for (const auto& p : points)
 	{
-		const double r = std::hypot(double(p.x()), double(p.y()));
+		const double y = double(p.y()) - viewpoint_y;
+		const double r = std::hypot(double(p.x()), y);
 		if (!(r < params.range)) continue;
 		const int ring = std::min(params.rings - 1, static_cast<int>(r / ring_width));
-		const double azimuth = std::atan2(double(p.y()), double(p.x())) + M_PI;  // [0, 2pi]
+		const double azimuth = std::atan2(y, double(p.x())) + M_PI;  // [0, 2pi]
 		const int sector = std::min(params.sectors - 1, static_cast<int>(azimuth / sector_width));
 		// Empty bins are 0: points below the ground (height < -sensor_height) leave them empty.
 		sc(ring, sector) = std::max(sc(ring, sector), double(p.z()) + params.sensor_height);

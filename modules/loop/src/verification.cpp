@@ -32,11 +32,12 @@ constexpr double kMinSigma = 0.01;  // [m] floor of the point-to-plane noise
 // [m] how far a registration from the descriptor's guess may move: beyond, it would be no verification.
 constexpr double kReach = 10.0;
 
-Eigen::Isometry3d yawGuess(double yaw)
+/// The descriptor's guess: the query's viewpoint turned by the yaw at the candidate's position.
+Eigen::Isometry3d descriptorGuess(const DescriptorMatch& match)
 {
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-	T.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-	return T;
+	T.linear() = Eigen::AngleAxisd(match.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+	return T * Eigen::Translation3d(0, -match.viewpoint_y, 0);
 }
 
 std::string formatted(const char* what, double value, const char* op, double limit)
@@ -115,7 +116,7 @@ Verification verifyLoop(const ScanPoints& current, const icp::Points& submap, co
 	coarse.kernel = kCoarseKernel;
 	coarse.max_iterations = kCoarseIterations;
 	coarse.convergence = kCoarseConvergence;
-	const Eigen::Isometry3d coarse_pose = icp::alignToMap(scan, coarse_map, yawGuess(match.yaw), coarse).pose;
+	const Eigen::Isometry3d coarse_pose = icp::alignToMap(scan, coarse_map, descriptorGuess(match), coarse).pose;
 
 	const PlaneMap map(icp::voxelDownsample(submap, options.scan_voxel));
 	const double inlier = options.inlier_distance;

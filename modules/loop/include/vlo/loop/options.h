@@ -17,6 +17,9 @@ struct LoopOptions : public OptionSet
 	int candidates = 10;  ///< nearest ring keys whose full descriptors are compared
 	double max_descriptor_distance = 0.25;  ///< larger distances are no candidate (0 = same, 1 = unrelated)
 	double min_revisit_path = 50.0;  ///< [m] driven between two visits of a place, at least
+	/// [m] each keyframe also queried from viewpoints this far to its left and right (a revisit in
+	/// another lane; Scan Context's bins move with a lateral offset); 0 = off
+	double query_shift = 3.5;
 
 	// Geometric verification.
 	double scan_voxel = 0.5;  ///< [m] keyframe scans are thinned to this voxel

@@ -20,8 +20,10 @@ struct ScanContextParams
 /// rings x sectors; sector j covers azimuths [-pi + j * 2pi / sectors, ...), x forward, y left.
 using ScanContext = Eigen::MatrixXd;
 
-/// The descriptor of points in the vehicle frame (x forward, z up).
-ScanContext makeScanContext(const std::vector<Eigen::Vector3f>& points, const ScanContextParams& params);
+/// The descriptor of points in the vehicle frame (x forward, z up), seen from `viewpoint_y` [m] to the
+/// vehicle's left (a virtual viewpoint in another lane, axes as the vehicle's).
+ScanContext makeScanContext(
+	const std::vector<Eigen::Vector3f>& points, const ScanContextParams& params, double viewpoint_y = 0);
 
 /// Each ring's mean height: invariant to the vehicle's yaw.
 Eigen::VectorXd ringKey(const ScanContext& sc);
@@ -31,6 +33,7 @@ struct DescriptorMatch
 	double distance = 1.0;  ///< 0 = the same, 1 = unrelated
 	int shift = 0;  ///< columns
 	double yaw = 0;  ///< [rad] rotation of the query's frame in the candidate's (about z)
+	double viewpoint_y = 0;  ///< [m] the query's descriptor was seen from this far to its vehicle's left
 };
 
 /// The mean cosine distance of the columns that hold points in both, at the best of all column shifts

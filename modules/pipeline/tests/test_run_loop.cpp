@@ -165,7 +165,6 @@ class FailingMonoVo : public FakeMonoVo
 };
 VLO_REGISTER_MODULE(kernel::VisualOdometryModule, "failing_mono", FailingMonoVo);
 
-
 class RunLoop : public ::testing::Test
 {
    protected:
@@ -286,9 +285,8 @@ TEST_F(RunLoop, BootstrappingOffLeavesTheLidarOdometryToItself)
 	EXPECT_EQ(column(out("frames.csv"), "vo_metric_motion"), (std::vector<std::string>{"0", "0", "1", "1", "1", "1"}));
 }
 
-// With loop closure on and no place visited twice (3 m of straight road) the loop-closed trajectory is the
-// odometry's, pose for pose; the run says how many keyframes and loops it had. Mode vo has no LiDAR
-// odometry to close loops over: no trajectory_slam.tum.
+// Loop closure without a revisit (3 m of straight road): the loop-closed trajectory is the odometry's,
+// pose for pose. Mode vo has no LiDAR odometry to close loops over: no trajectory_slam.tum.
 TEST_F(RunLoop, LoopClosureWithoutRevisitKeepsTheOdometrysPoses)
 {
 	const RunSummary lo = run({"pipeline.mode=lo", "pipeline.loop_closure=true"});

@@ -13,7 +13,7 @@ int main(int argc, char** argv)
 {
 	return vlo::runApp("vlo-sim", [&] {
 		const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 1,
-			{{"scenario", "NAME", "urban | trees | corridor | loop | facades (default urban)"},
+			{{"scenario", "NAME", "urban | trees | corridor | loop | facades | avenue (default urban)"},
 				{"lidar", "MODEL", "hdl64 | vlp16 (default hdl64)"},
 				{"frames", "N", "number of 10 Hz frames (default 100)"},
 				{"seed", "S", "world, drive and noise seed (default 1)"},
@@ -31,6 +31,7 @@ int main(int argc, char** argv)
 				{"point-times", "", "with the realism: write each point's time and ring (a rolling sweep as a driver with times gives it)"},
 				{"no-noise", "", "the exact sensor without image noise, range noise or dropouts (for checks; implies --no-realism)"},
 				{"foliage-depth", "M", "mean depth of LiDAR returns inside tree crowns and bushes (default 0: solid hulls)"},
+				{"sun-shadows", "", "strong sun: tree crowns cast hard, dappled shadows on everything the camera sees (lit x1.45, shade x0.4)"},
 				{"blackout", "A:B", "uniform grey images for frames A..B-1 (a blinded camera)"},
 				{"traffic", "N", "N vehicles driving the road both ways, overtaking and oncoming (default 0)"},
 				{"traffic-without-returns", "", "the vehicles block the LiDAR's beams but return nothing (an ideal removal of moving points)"},
@@ -76,6 +77,7 @@ int main(int argc, char** argv)
 		if (cl.has("no-noise")) cfg.range_noise = cfg.image_noise = cfg.dropout = 0;
 		cfg.foliage_depth = cl.getDouble("foliage-depth", 0);
 		if (!(cfg.foliage_depth >= 0 && cfg.foliage_depth <= 10)) vlo::failInput("--foliage-depth", "must be between 0 and 10 m");
+		cfg.sun_shadows = cl.has("sun-shadows");
 		const long traffic = cl.getInt("traffic", 0);
 		if (traffic < 0 || traffic > 1000) vlo::failInput("--traffic", "must be between 0 and 1000 vehicles");
 		cfg.traffic = static_cast<int>(traffic);

@@ -17,7 +17,8 @@ Scenario parseScenario(const std::string& name)
 	if (name == "corridor") return Scenario::Corridor;
 	if (name == "loop") return Scenario::Loop;
 	if (name == "facades") return Scenario::Facades;
-	failInput("--scenario", "unknown scenario '" + name + "' (urban, trees, corridor, loop or facades)");
+	if (name == "avenue") return Scenario::Avenue;
+	failInput("--scenario", "unknown scenario '" + name + "' (urban, trees, corridor, loop, facades or avenue)");
 }
 
 std::string scenarioName(Scenario s)
@@ -29,6 +30,7 @@ std::string scenarioName(Scenario s)
 		case Scenario::Corridor: return "corridor";
 		case Scenario::Loop: return "loop";
 		case Scenario::Facades: return "facades";
+		case Scenario::Avenue: return "avenue";
 	}
 	return "?";
 }

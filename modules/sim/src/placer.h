@@ -53,6 +53,7 @@ class Placer
 void buildUrbanSide(Placer& p, double side, double s0, double s1, double skip_from, double skip_to);
 void buildCorridorWalls(Placer& p, double s0, double s1);
 void buildTreesSide(Placer& p, double side, double s0, double s1);
+void buildAvenueSide(Placer& p, double side, double s0, double s1);
 void buildLoopSides(Placer& p, const std::vector<double>& turning_places, double park_from, double park_to);
 void buildFacadeStreet(Placer& p, double period, double s0, double s1);
 }  // namespace vlo::sim

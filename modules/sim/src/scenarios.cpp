@@ -49,7 +49,7 @@ void Placer::occupy(const Eigen::Isometry3d& f, double sx, double sy)
 CrossSection crossSectionFor(Scenario s)
 {
 	CrossSection cs;
-	if (s == Scenario::Trees)
+	if (s == Scenario::Trees || s == Scenario::Avenue)
 	{
 		cs.half_width = 3.6, cs.lane = 3.3, cs.sidewalk = 0, cs.shoulder = 1.0;
 	}
@@ -68,10 +68,10 @@ TexturePool makeTextures(World& w, Scenario sc, const CrossSection& cs, uint64_t
 	t.ground.curb = w.addTexture(curbTexture(seed));
 	t.ground.shoulder = w.addTexture(gravelTexture(seed));
 	t.ground.verge = w.addTexture(grassTexture(seed + 1, 105));
-	t.ground.terrain = w.addTexture(grassTexture(seed + 2, sc == Scenario::Trees ? 95 : 115));
+	t.ground.terrain = w.addTexture(grassTexture(seed + 2, sc == Scenario::Trees || sc == Scenario::Avenue ? 95 : 115));
 	for (int i = 0; i < 3; ++i) t.barks.push_back(w.addTexture(barkTexture(seed + 10 + i)));
 	for (int i = 0; i < 4; ++i) t.foliages.push_back(w.addTexture(foliageTexture(seed + 20 + i)));
-	if (sc == Scenario::Trees) return t;
+	if (sc == Scenario::Trees || sc == Scenario::Avenue) return t;
 	for (int i = 0; i < 8; ++i) t.facades.push_back(w.addTexture(facadeTexture(seed + 30 + i)));
 	for (int i = 0; i < 5; ++i)
 	{
@@ -105,6 +105,8 @@ World buildWorld(const WorldSpec& spec, const Road& road)
 		{
 			if (spec.scenario == Scenario::Trees)
 				buildTreesSide(p, side, 0, L);
+			else if (spec.scenario == Scenario::Avenue)
+				buildAvenueSide(p, side, 0, L);
 			else if (spec.scenario == Scenario::Corridor)
 				buildUrbanSide(p, side, 0, L, spec.corridor_from, spec.corridor_to);
 			else

@@ -10,6 +10,7 @@
 #include <vlo/sim/rng.h>
 #include <vlo/sim/scenarios.h>
 #include <vlo/sim/simulator.h>
+#include <vlo/sim/sun_shadows.h>
 
 #include <mrpt/opengl/COpenGLScene.h>
 #include <opencv2/core.hpp>
@@ -110,6 +111,7 @@ Drive generatedDrive(const SimConfig& cfg)
 	DriveStyle ds;
 	if (cfg.scenario == Scenario::Corridor) ds.v_min = 8, ds.v_max = 12;
 	if (cfg.scenario == Scenario::Trees) ds.v_min = 7;
+	if (cfg.scenario == Scenario::Avenue) ds.v_min = 11, ds.v_max = 13;  // KITTI raw 2011_09_26_0013's speeds
 	const double dist = plannedDistance(ds, duration, cfg.seed);
 	RoadStyle st = styleFor(cfg.scenario);
 	if (cfg.scenario == Scenario::Corridor)
@@ -235,6 +237,7 @@ Frame Simulator::frame(int k, RenderedView* camera_depth)
 	f.index = static_cast<std::size_t>(k);
 	f.t = t;
 	f.rig = rig;
+	if (d.cfg.sun_shadows) applySunShadows(tiles[0], views[0], d.world.foliage(), SunLight());
 	Rng imageNoise = Rng::stream(d.cfg.seed, "image noise", static_cast<uint64_t>(k));
 	const CameraRealism* camera = d.cfg.realism.enabled ? &d.cfg.realism.camera : nullptr;
 	f.image = d.camera->image(tiles[0], d.cfg.image_noise, imageNoise, camera, camera ? exposureGain(*camera, d.cfg.seed, k) : 1.0);

@@ -15,9 +15,10 @@ enum class Scenario
 	Trees,  ///< a winding road with only trees and ground: few planes, hard for LOAM
 	Corridor,  ///< urban, then a long straight between smooth textured walls, then urban again
 	Loop,  ///< a 504 m city-block circuit driven lap after lap, turning around to drive it back (circuit.h)
-	Facades  ///< a straight street of identical units (facade, lamp, car, tree) every facade_period metres
+	Facades,  ///< a straight street of identical units (facade, lamp, car, tree) every facade_period metres
+	Avenue  ///< a gentle road at 11-13 m/s between dense trees and bushes right beside it (a KITTI raw tree stretch)
 };
-/// "urban" | "trees" | "corridor" | "loop" | "facades"; InputError otherwise.
+/// "urban" | "trees" | "corridor" | "loop" | "facades" | "avenue"; InputError otherwise.
 Scenario parseScenario(const std::string& name);
 std::string scenarioName(Scenario s);
 
@@ -83,5 +84,7 @@ struct SimConfig
 	double reverse_after_laps = 1.5;
 	/// Facades: metres between the street's identical units (a multiple of 8 m, so the ground repeats too).
 	double facade_period = 24;
+	/// Strong sun: the crowns cast hard, dappled shadows on everything the camera sees (sun_shadows.h).
+	bool sun_shadows = false;
 };
 }  // namespace vlo::sim

@@ -26,6 +26,12 @@ class Foliage
 	/// Points not on a crown, and mean_depth 0, keep `range`.
 	bool penetrate(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double mean_depth, Rng& rng, double& range) const;
 
+	/// Whether a crown stands between `p` and the sun (unit vector `to_sun`, pointing up): the ray
+	/// crosses a crown's hull for more than 0.2 m and does not enter it through one of the leaf gaps
+	/// (where a fixed 3-D value noise with features 0.4 m apart is below `gap_fraction`, the sun
+	/// passes between the leaves).
+	bool shades(const Eigen::Vector3d& p, const Eigen::Vector3d& to_sun, double gap_fraction) const;
+
    private:
 	struct Crown
 	{

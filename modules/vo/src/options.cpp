@@ -55,7 +55,9 @@ void TrackingOptions::declare(OptionTable& t)
 	t.add("local_radius", local_radius, "> 0", "factor on the local-map search window");
 	t.add("local_ratio", local_ratio, "(0, 1]", "best/second best distance on the same level");
 	t.add("max_local_keyframes", max_local_keyframes, ">= 1", "keyframes of the local map");
-	t.add("min_local_inliers", min_local_inliers, ">= 4", "fewer after the local map: LOST");
+	t.add("min_local_inliers", min_local_inliers, ">= 4", "fewer after the local map: LOST (unless weak)");
+	t.add("min_weak_inliers", min_weak_inliers, ">= 0", "fewer than min_local_inliers but this many: kept, a keyframe at once (0: off)");
+	t.add("max_weak_frames", max_weak_frames, ">= 1", "weak frames kept in a row at most");
 	t.add("pose_rounds", pose_rounds, ">= 1", "pose optimisation rounds (outliers re-marked)");
 	t.add("pose_iterations", pose_iterations, ">= 1", "solver iterations per round");
 	t.add("chi2", chi2, "> 0", "outlier threshold, squared error per sigma^2 (2 dof 95%)");
@@ -63,6 +65,8 @@ void TrackingOptions::declare(OptionTable& t)
 	t.add("keyframe_ref_ratio", keyframe_ref_ratio, "(0, 1]", "tracked < ratio * reference keyframe points: keyframe");
 	t.add("keyframe_min_inliers", keyframe_min_inliers, ">= 0", "no keyframe from a frame with fewer inliers");
 	t.add("keyframe_weak_inliers", keyframe_weak_inliers, ">= 0", "fewer inliers: keyframe whatever the ratio (0: off)");
+	t.add("keyframe_interrupt_inliers", keyframe_interrupt_inliers, ">= 0",
+		"fewer inliers and a keyframe needed: the pending local BA is applied now (0: off)");
 	t.add("reinit_extrapolate", reinit_extrapolate, "true | false", "new map placed by constant velocity over the gap");
 	t.add("reinit_keep_depth", reinit_keep_depth, "true | false", "new map scaled to the old map's median depth");
 }

@@ -130,17 +130,24 @@ bool VisualOdometry::Impl::track(TrackedFrame& cur, VoFrameInfo& inf)
 	}
 	const int inliers = tracker.withLocalMap(cur);
 	inf.matches = inliers;
-	if (inliers < opt.tracking.min_local_inliers)
+	const TrackingOptions& o = opt.tracking;
+	const bool weak = inliers < o.min_local_inliers;
+	if (weak && (o.min_weak_inliers == 0 || inliers < o.min_weak_inliers || weak_frames >= o.max_weak_frames || inliers <= o.keyframe_min_inliers))
 	{
-		inf.reason = "local map: " + std::to_string(inliers) + " inliers (< " +
-			std::to_string(opt.tracking.min_local_inliers) + ")";
+		inf.reason = "local map: " + std::to_string(inliers) + " inliers (< " + std::to_string(o.min_local_inliers) + ")";
 		return false;
 	}
+	weak_frames = weak ? weak_frames + 1 : 0;
 	cur.has_pose = true;
-	inf.reason = how;
-	// No keyframe while the last one's mapping is pending (ORB-SLAM: while local mapping is busy).
-	if (!mapper->pending() && tracker.needKeyFrame(inliers, cur.ref_kf, cur.index - last_kf_frame, map->numKeyFrames()))
-		insertKeyFrame(cur, inf);
+	inf.reason = weak ? std::string(how) + "; weak: " + std::to_string(inliers) + " inliers, keyframe" : how;
+	// No keyframe while the last one's mapping is pending (ORB-SLAM: while local mapping is busy),
+	// unless tracking is weak: then the pending BA is applied now, as ORB-SLAM interrupts its BA. At
+	// 12 m/s past close foliage the points go out of view within 2-3 frames (doc/VO.md "Fast foliage").
+	if (weak || tracker.needKeyFrame(inliers, cur.ref_kf, cur.index - last_kf_frame, map->numKeyFrames()))
+	{
+		if (mapper->pending() && (weak || inliers < o.keyframe_interrupt_inliers)) addFinished(inf, mapper->finish());
+		if (!mapper->pending()) insertKeyFrame(cur, inf);
+	}
 	velocity = cur.Tcw * last.Tcw.inverse();
 	has_velocity = true;
 	return true;
@@ -194,6 +201,7 @@ void VisualOdometry::Impl::lose()
 	map.reset();
 	last_kf = nullptr;
 	has_velocity = false;
+	weak_frames = 0;
 	init.reset();
 	state = VoState::Lost;
 }

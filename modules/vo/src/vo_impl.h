@@ -45,6 +45,7 @@ struct VisualOdometry::Impl
 	std::shared_ptr<const Features> current_feat;
 	SE3 velocity = SE3::Identity();  ///< Tcw(k) * Tcw(k-1)^-1
 	bool has_velocity = false;
+	int weak_frames = 0;  ///< frames in a row kept with fewer than min_local_inliers
 	KeyFrame* last_kf = nullptr;
 	long last_kf_frame = -1;
 	/// The current map's world frame in the trajectory frame (re-anchored when the map is rescaled).

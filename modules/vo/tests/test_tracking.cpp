@@ -75,3 +75,45 @@ TEST(Tracking, BlankStretchGivesLostThenRecovers)
 	EXPECT_LT(test::ateSim3(run.truth, after.estimate).ate_rmse_m, 0.01 * length);
 	EXPECT_LT(test::ateSim3(run.truth, run.estimate).ate_rmse_m, 0.05 * length);
 }
+
+// A frame with fewer than min_local_inliers but at least min_weak_inliers is kept and made a
+// keyframe, at most max_weak_frames in a row. With min_local_inliers out of reach every tracked
+// frame is weak: known answers for the counts.
+TEST(Tracking, WeakFramesAreKeptAsKeyframesAtMostMaxInARow)
+{
+	const auto cam = test::kittiCamera();
+	VoOptions opt;
+	opt.tracking.min_local_inliers = 100000;
+	opt.tracking.min_weak_inliers = 20;
+	opt.tracking.max_weak_frames = 2;
+	const auto run = test::runStreet(cam, 12, opt);
+	int first = -1;
+	for (const auto& i : run.infos)
+		if (i.pose && first < 0) first = static_cast<int>(i.index);
+	ASSERT_GE(first, 0);
+	ASSERT_LT(first + 3, 12);
+	for (int k = first + 1; k <= first + 2; ++k)
+	{
+		const auto& i = run.infos[static_cast<std::size_t>(k)];
+		EXPECT_EQ(i.state, VoState::Ok) << k << ": " << i.reason;
+		EXPECT_NE(i.reason.find("weak"), std::string::npos) << k << ": " << i.reason;
+		EXPECT_TRUE(i.keyframe) << k;
+	}
+	const auto& third = run.infos[static_cast<std::size_t>(first + 3)];
+	EXPECT_NE(third.reason.find("LOST: local map"), std::string::npos) << third.reason;
+
+	// Off (ORB-SLAM2's rule): the first frame after the initialisation is lost.
+	opt.tracking.min_weak_inliers = 0;
+	const auto strict = test::runStreet(cam, first + 2, opt);
+	EXPECT_NE(strict.infos[static_cast<std::size_t>(first + 1)].reason.find("LOST: local map"), std::string::npos)
+		<< strict.infos[static_cast<std::size_t>(first + 1)].reason;
+
+	// Without a limit, every frame weak: tracked to the end, one keyframe each, on the true path.
+	opt.tracking.min_weak_inliers = 20;
+	opt.tracking.max_weak_frames = 1000;
+	const auto kept = test::runStreet(cam, 30, opt);
+	EXPECT_EQ(kept.lost, 0);
+	EXPECT_EQ(kept.tracked, 30 - first);
+	const auto ate = test::ateSim3(kept.truth, kept.estimate);
+	EXPECT_LT(ate.ate_rmse_m, 0.01 * pathLength(kept.truth)) << "ATE " << ate.ate_rmse_m;
+}

@@ -76,7 +76,12 @@ struct TrackingOptions : public OptionSet
 	double local_radius = 1.0;  ///< factor on the local-map window (2.5 or 4 px per level scale)
 	double local_ratio = 0.8;  ///< best / second best distance on the same level
 	int max_local_keyframes = 80;
-	int min_local_inliers = 30;  ///< fewer after tracking the local map: LOST
+	int min_local_inliers = 30;  ///< fewer after tracking the local map: LOST (unless weak, below)
+	/// A frame with fewer than min_local_inliers but at least this many, after frames tracked with
+	/// min_local_inliers, is kept and made a keyframe at once (its new points carry tracking on)
+	/// instead of being LOST; at most max_weak_frames of them in a row. 0 = off (ORB-SLAM2: LOST).
+	int min_weak_inliers = 20;
+	int max_weak_frames = 2;
 	int pose_rounds = 4;  ///< pose-only optimisation: rounds of outlier marking ...
 	int pose_iterations = 10;  ///< ... of at most this many solver iterations each
 	double chi2 = 5.991;  ///< outlier threshold on the squared, sigma-normalised reprojection error
@@ -86,6 +91,10 @@ struct TrackingOptions : public OptionSet
 	/// Fewer inliers: a keyframe whatever the reference keyframe tracks. A keyframe made from a weakly
 	/// tracked frame has few points seen thrice, so the ratio alone waits until tracking is lost.
 	int keyframe_weak_inliers = 50;
+	/// A frame with fewer inliers that needs a keyframe while the last keyframe's local BA is pending
+	/// gets it now: the BA is applied at once instead of at its due frame (ORB-SLAM2's tracking
+	/// interrupts the local BA when it needs a keyframe). 0 = wait for the due frame (doc/VO.md).
+	int keyframe_interrupt_inliers = 0;
 	bool reinit_extrapolate = true;  ///< a new map starts where constant velocity puts it
 	bool reinit_keep_depth = true;  ///< a new map gets the old map's median scene depth (scale)
 

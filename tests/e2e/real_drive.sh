@@ -41,10 +41,11 @@ column out_lo/frames.csv lo_point_times | sort -u | grep -qx sensor || fail "lo:
 read -r ratio ate <<< "$(run vlo vlo)"
 check "full system" "$ratio" "$ate" 0.989 1.01 0.15
 # The scale-corrected VO of that run: its LiDAR depths are taken where the image saw them (the sweep
-# moved to the image's time); without that its path was 2.5 % long, ATE 0.40 m.
+# moved to the image's time; without that its path was 2.5 % long, ATE 0.40 m), along rays raised by
+# KITTI's 0.22 deg elevation error (without: 1.6 % long, ATE 0.27 m); measured 0.9958, ATE 0.117 m.
 "$BIN/vlo-eval" --gt d13.gt.tum --est out_vlo/trajectory_vo.tum --metric ate --json vo.json > /dev/null || fail "vlo-eval of the VO"
 check "scale-corrected VO" "$(awk -v e="$(jv vo.json est_length_m)" -v g="$(jv vo.json gt_length_m)" 'BEGIN { printf "%.4f", e / g }')" \
-	"$(jv vo.json ate_rmse_m)" 0.98 1.022 0.35
+	"$(jv vo.json ate_rmse_m)" 0.99 1.01 0.2
 read -r ratio ate <<< "$(run icp lo --set pipeline.lidar_odometry=icp --set lidar.point_times=none)"
 check "ICP (KISS-ICP's defaults)" "$ratio" "$ate" 0.99 1.01 0.13
 

@@ -18,6 +18,7 @@ void ScaleOptions::declare(OptionTable& t)
 	t.add("min_depth", min_depth, "> 0", "[m] LiDAR points nearer than this (camera z) are not projected");
 	t.add("max_depth", max_depth, ">= 0", "[m] nor farther than this (0 = no limit)");
 	t.add("border", border, ">= 4", "[px] image margin without keypoints (>= 4)");
+	t.add("lidar_elevation_offset_deg", lidar_elevation_offset_deg, "[-2, 2]", "[deg] added to every LiDAR ray's elevation (KITTI's HDL-64: 0.22)");
 	std::vector<std::pair<std::string, KeypointTest>> tests;
 	for (auto k : {KeypointTest::Fast9, KeypointTest::Fast12Pretest, KeypointTest::None}) tests.emplace_back(toString(k), k);
 	t.choice("keypoint_test", keypoint_test, tests,
@@ -47,6 +48,7 @@ void ScaleOptions::declare(OptionTable& t)
 	t.add("min_inliers", min_inliers, ">= 1", "fewer survivors at any stage: no estimate");
 	t.add("min_inlier_ratio", min_inlier_ratio, "[0, 1]", "smallest inlier fraction of the triangulated points");
 	t.add("correction_threshold", correction_threshold, ">= 0", "correct the VO map when |s - 1| >= this");
+	t.add("initial_refine_threshold", initial_refine_threshold, ">= 0", "the first full window after the initial estimate corrects when |median - 1| >= this (0: off)");
 	t.add("correction_enabled", correction_enabled, "true | false", "false: scale fixed once after initialisation");
 	t.add("correction_window", correction_window, ">= 1", "median of the last N valid estimates decides (1 = paper)");
 }

@@ -19,6 +19,7 @@ const char* toString(ScaleDecision::Kind k)
 
 ScaleCorrectionPolicy::ScaleCorrectionPolicy(const ScaleOptions& opt)
 	: threshold_(opt.correction_threshold),
+	  refine_threshold_(opt.initial_refine_threshold),
 	  enabled_(opt.correction_enabled),
 	  window_(static_cast<std::size_t>(std::max(1, opt.correction_window)))
 {
@@ -55,7 +56,10 @@ ScaleDecision ScaleCorrectionPolicy::decide(const ScaleEstimate& e)
 		std::vector<double> v(recent_.begin(), recent_.end());
 		std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
 		const double median = v[v.size() / 2];
-		if (std::abs(median - 1.0) < threshold_)
+		// The initial scale came from one frame pair; the first full window refines it more finely.
+		const double threshold = refined_ || refine_threshold_ <= 0 ? threshold_ : refine_threshold_;
+		refined_ = true;
+		if (std::abs(median - 1.0) < threshold)
 		{
 			d.why = "within threshold";
 			return d;
@@ -76,6 +80,7 @@ ScaleDecision ScaleCorrectionPolicy::decide(const ScaleEstimate& e)
 void ScaleCorrectionPolicy::reset()
 {
 	initialized_ = false;
+	refined_ = false;
 	recent_.clear();
 	cumulative_ = 1.0;
 	corrections_ = 0;

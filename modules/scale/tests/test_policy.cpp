@@ -99,3 +99,29 @@ TEST(Policy, MedianCorrectionValueIgnoresOutliers)
 	EXPECT_NEAR(p.cumulative(), 1.0 * 1.05 * 1.1, 1e-12);
 	EXPECT_EQ(p.corrections(), 2);
 }
+
+// The first full window after the initial estimate refines it with its own, finer threshold; later
+// windows use correction_threshold again, and a new map (reset) refines afresh.
+TEST(Policy, TheFirstWindowRefinesTheInitialScaleMoreFinely)
+{
+	ScaleOptions opt;
+	opt.correction_window = 3;
+	opt.initial_refine_threshold = 0.005;
+	ScaleCorrectionPolicy p(opt);
+	EXPECT_EQ(p.decide(estimate(20.0)).kind, ScaleDecision::Kind::Initial);
+	EXPECT_FALSE(p.decide(estimate(0.990)).apply());
+	EXPECT_FALSE(p.decide(estimate(0.995)).apply());
+	const ScaleDecision d = p.decide(estimate(0.992));  // median 0.992: 0.8 % off, beyond 0.5 %
+	EXPECT_EQ(d.kind, ScaleDecision::Kind::Correction);
+	EXPECT_DOUBLE_EQ(d.factor, 0.992);
+	for (double s : {0.99, 0.99, 0.99}) EXPECT_FALSE(p.decide(estimate(s)).apply()) << s;  // 1 % < 2 %
+	p.reset();
+	p.decide(estimate(20.0));
+	for (double s : {1.01, 1.01}) EXPECT_FALSE(p.decide(estimate(s)).apply());
+	EXPECT_TRUE(p.decide(estimate(1.01)).apply());
+	// Off (0): the first window waits for correction_threshold like every other.
+	opt.initial_refine_threshold = 0;
+	ScaleCorrectionPolicy off(opt);
+	off.decide(estimate(20.0));
+	for (double s : {0.99, 0.99, 0.99}) EXPECT_FALSE(off.decide(estimate(s)).apply()) << s;
+}

@@ -20,6 +20,8 @@ struct ScaleOptions : public OptionSet
 	double min_depth = 1.0;  ///< [m] along the optical axis; nearer points are ignored
 	double max_depth = 80.0;  ///< [m]; farther points have too little parallax (0 = no limit)
 	int border = 8;  ///< [px] margin kept free at the image edges (>= 4: the FAST circle fits)
+	/// [deg] added to every LiDAR ray's elevation before projecting (elevation_offset.h); KITTI: 0.22.
+	double lidar_elevation_offset_deg = 0.0;
 
 	// Keypoint selection among projected pixels.
 	KeypointTest keypoint_test = KeypointTest::Fast9;
@@ -56,6 +58,10 @@ struct ScaleOptions : public OptionSet
 
 	// ScaleCorrectionPolicy.
 	double correction_threshold = 0.02;  ///< apply when |s - 1| >= this (the paper's 2 %)
+	/// The first full correction window after the initial estimate corrects when |median - 1| >= this
+	/// (the initial estimate is one frame pair's, scattered by 2-4 %); later windows use
+	/// correction_threshold. 0 = off: correction_threshold for every window.
+	double initial_refine_threshold = 0.0;
 	bool correction_enabled = true;  ///< false: only the first estimate (initial metric scale) is applied
 	/// Median of the last N valid estimates decides a correction (1 = each estimate alone, the paper).
 	/// Single estimates scatter by 2-4 %, as much as the 2 % threshold: rescaling the VO on each of

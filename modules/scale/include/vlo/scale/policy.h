@@ -45,6 +45,8 @@ class ScaleCorrectionPolicy
 
    private:
 	double threshold_;
+	double refine_threshold_;  ///< for the first full window after the initial estimate
+	bool refined_ = false;  ///< that window has decided since the last reset
 	bool enabled_;
 	std::size_t window_;
 	std::deque<double> recent_;  ///< valid estimates since the last applied factor

@@ -1,0 +1,14 @@
+#pragma once
+// A spinning LiDAR's beams are calibrated per laser; an error common to the elevations tilts every ray
+// up or down. In the scale corrector this matters more than anywhere: a ray 0.2 degrees too steep
+// projects its point 2.5 px too low in the image (f = 718 px), where the ground the camera sees at
+// that pixel is nearer than the point's depth by 2 % at 10 m, so s_j = d_j / v_j comes out too large.
+// KITTI's HDL-64 scans are known to need +0.22 degrees (IMLS-SLAM, Deschaud 2018; CT-ICP).
+#include <vlo/core/frame.h>
+
+namespace vlo::scale
+{
+/// `scan` with every ray turned up by `offset_deg` about the horizontal axis across it (LiDAR frame,
+/// z up): the range and the azimuth stay, the elevation grows by the offset.
+PointCloud raiseElevations(const PointCloud& scan, double offset_deg);
+}  // namespace vlo::scale

@@ -52,6 +52,16 @@ class Placer
 
 void buildUrbanSide(Placer& p, double side, double s0, double s1, double skip_from, double skip_to);
 void buildCorridorWalls(Placer& p, double s0, double s1);
+/// Trees along one side of the road: the first within `first` m of s0, then every gap[0]-gap[1] m,
+/// off[0]-off[1] m beyond the clearance, trunks needing a free footprint, sizes size[0]-size[1].
+struct TreeRow
+{
+	double first;
+	double gap[2], off[2];
+	double footprint;
+	double size[2];
+};
+void plantTreeRow(Placer& p, double side, double s0, double s1, const TreeRow& row);
 void buildTreesSide(Placer& p, double side, double s0, double s1);
 void buildAvenueSide(Placer& p, double side, double s0, double s1);
 void buildLoopSides(Placer& p, const std::vector<double>& turning_places, double park_from, double park_to);

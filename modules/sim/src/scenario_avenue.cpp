@@ -12,13 +12,7 @@ void buildAvenueSide(Placer& p, double side, double s0, double s1)
 {
 	const double clear = p.cs.clearance();
 	// The avenue's row: trunks 0.6-2.5 m off the shoulder every 3-7 m, large low crowns.
-	for (double s = s0 + p.rng.uniform(0, 3); s < s1; s += p.rng.uniform(3, 7))
-	{
-		const auto f = p.frameAt(s, side * (clear + p.rng.uniform(0.6, 2.5)));
-		if (!p.fits(f, 1.0, 1.0, clear)) continue;
-		addTree(p.world, f.translation(), p.rng.uniform(1.0, 1.5), p.pick(p.tex.barks), p.pick(p.tex.foliages), p.rng);
-		p.occupy(f, 1.0, 1.0);
-	}
+	plantTreeRow(p, side, s0, s1, {3, {3, 7}, {0.6, 2.5}, 1.0, {1.0, 1.5}});
 	// Bushes between the trunks, at the camera's height, 0-1.5 m off the shoulder.
 	for (double s = s0 + p.rng.uniform(0, 4); s < s1; s += p.rng.uniform(4, 10))
 	{

@@ -8,25 +8,24 @@
 
 namespace vlo::sim
 {
+void plantTreeRow(Placer& p, double side, double s0, double s1, const TreeRow& row)
+{
+	const double clear = p.cs.clearance();
+	for (double s = s0 + p.rng.uniform(0, row.first); s < s1; s += p.rng.uniform(row.gap[0], row.gap[1]))
+	{
+		const auto f = p.frameAt(s, side * (clear + p.rng.uniform(row.off[0], row.off[1])));
+		if (!p.fits(f, row.footprint, row.footprint, clear)) continue;
+		addTree(p.world, f.translation(), p.rng.uniform(row.size[0], row.size[1]), p.pick(p.tex.barks), p.pick(p.tex.foliages), p.rng);
+		p.occupy(f, row.footprint, row.footprint);
+	}
+}
+
 void buildTreesSide(Placer& p, double side, double s0, double s1)
 {
 	const double clear = p.cs.clearance();
-	// Near row: irregular spacing, 1-10 m off the shoulder.
-	for (double s = s0 + p.rng.uniform(0, 5); s < s1; s += p.rng.uniform(3.5, 9))
-	{
-		const auto f = p.frameAt(s, side * (clear + p.rng.uniform(1, 10)));
-		if (!p.fits(f, 2.0, 2.0, clear)) continue;
-		addTree(p.world, f.translation(), p.rng.uniform(0.7, 1.3), p.pick(p.tex.barks), p.pick(p.tex.foliages), p.rng);
-		p.occupy(f, 2.0, 2.0);
-	}
-	// Sparser trees further away, and bushes.
-	for (double s = s0 + p.rng.uniform(0, 8); s < s1; s += p.rng.uniform(6, 14))
-	{
-		const auto f = p.frameAt(s, side * (clear + p.rng.uniform(12, 35)));
-		if (!p.fits(f, 2.5, 2.5, clear)) continue;
-		addTree(p.world, f.translation(), p.rng.uniform(0.9, 1.5), p.pick(p.tex.barks), p.pick(p.tex.foliages), p.rng);
-		p.occupy(f, 2.5, 2.5);
-	}
+	// Near row: irregular spacing, 1-10 m off the shoulder; sparser trees further away, and bushes.
+	plantTreeRow(p, side, s0, s1, {5, {3.5, 9}, {1, 10}, 2.0, {0.7, 1.3}});
+	plantTreeRow(p, side, s0, s1, {8, {6, 14}, {12, 35}, 2.5, {0.9, 1.5}});
 	for (double s = s0 + p.rng.uniform(0, 8); s < s1; s += p.rng.uniform(8, 20))
 	{
 		const auto f = p.frameAt(s, side * (clear + p.rng.uniform(0.5, 6)));

@@ -132,6 +132,18 @@ bool ScanToMap::seenFromTooFar(const Eigen::Vector3d& u, bool scan_silhouette, c
 	return false;
 }
 
+bool ScanToMap::seenFromOtherRange(const Eigen::Vector3f& p, const Eigen::Vector3f* nn, const std::uint32_t* tags, int k) const
+{
+	if (opt_.edge_range_ratio <= 0) return false;
+	const float ratio = static_cast<float>(opt_.edge_range_ratio), range = p.norm();
+	for (int i = 0; i < k; ++i)
+	{
+		const float then = (nn[i] - scan_origins_[tags[i] >> 1]).norm();
+		if (then > ratio * range || range > ratio * then) return true;
+	}
+	return false;
+}
+
 void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const
 {
 	const Eigen::Matrix3f R = T.linear().cast<float>();
@@ -145,6 +157,7 @@ void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Mat
 	{
 		const Eigen::Vector3f& p = in.edges[e];
 		if (edge_map_.knn(R * p + t, k, static_cast<float>(opt_.max_nn_distance), nn, tags) < k) continue;
+		if (seenFromOtherRange(p, nn, tags, k)) continue;
 		fit(nn, k, c, es);
 		if (!lineLike(es, opt_.edge_eigen_ratio)) continue;
 		const Eigen::Vector3d u = es.eigenvectors().col(2);

@@ -113,6 +113,7 @@ void MappingOptions::declare(OptionTable& t)
 	t.add("min_line_elevation_deg", min_line_elevation_deg, "[0, 90]", "map lines flatter than this to the LiDAR's horizontal plane depend on the view, as silhouettes do [deg]");
 	t.add("view_dependent_reach", view_dependent_reach, ">= 0", "lines that depend on the view are matched only against map points seen from within this distance (0: any) [m]");
 	t.add("view_dependent_silhouettes", view_dependent_silhouettes, "true | false", "edge points on an outline against a farther surface depend on the view, as flat lines do");
+	t.add("edge_range_ratio", edge_range_ratio, ">= 0", "lines are matched only against map points seen from within this factor of the edge point's range (0: any)");
 	t.add("plane_max_distance", plane_max_distance, "> 0", "plane if all neighbours are this close to it [m]");
 	t.add("plane_line_ratio", plane_line_ratio, ">= 1", "no plane if largest eigenvalue > ratio * middle (one ring)");
 	t.add("min_edge_correspondences", min_edge_correspondences, ">= 0", "fewer edge matches: keep the odometry pose (0: edges optional)");
@@ -133,6 +134,7 @@ void MappingOptions::checkRelations() const
 	require(voxel_size / map_edge_resolution <= 64 && voxel_size / map_plane_resolution <= 64, "voxel_size",
 		"must be at most 64 map resolution cells");
 	require(max_points_per_voxel >= knn, "max_points_per_voxel", "must be >= knn");
+	require(edge_range_ratio == 0 || edge_range_ratio >= 1, "edge_range_ratio", "must be 0 (off) or >= 1");
 	require(edges == "on" || min_edge_correspondences == 0, "min_edge_correspondences", "must be 0 unless edges is on");
 	require(map_radius > voxel_size, "map_radius", "must exceed voxel_size");
 	require(max_rounds >= solver.outer_iterations, "max_rounds", "must be >= outer_iterations");

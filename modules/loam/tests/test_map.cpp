@@ -92,6 +92,39 @@ TEST(Map, LinesThatDependOnTheViewAreMatchedOnlyFromNearby)
 	EXPECT_EQ(matches(3, 53, false), 2u);  // silhouettes as any line: only the curb goes
 }
 
+TEST(Map, LinesAreMatchedOnlyToPointsSeenFromASimilarRange)
+{
+	// Where a real beam finds an outline or a corner depends on the range it is seen from. A pole
+	// 10 m ahead goes into the map from 10, 12 or 8 m away; the probe on it is seen from 10.05 m.
+	const auto matches = [](float seen_from_x, double ratio) {
+		FeatureSet f;
+		for (int i = 0; i < 12; ++i)
+		{
+			ScanPoint q;
+			q.p = Eigen::Vector3f(10.0f - seen_from_x, 0.1f, -1.4f + 0.21f * i);
+			f.less_sharp.push_back(q);
+			f.less_sharp_silhouette.push_back(0);
+		}
+		MappingOptions o;
+		o.edge_range_ratio = ratio;
+		ScanToMap mapper(o);
+		Eigen::Isometry3d seen_from = Eigen::Isometry3d::Identity();
+		seen_from.translation().x() = seen_from_x;
+		mapper.insert(f, seen_from);
+		ScanToMap::Input probe;
+		probe.edges = {Eigen::Vector3f(10.05f, 0.1f, 0.1f)};
+		probe.edge_silhouette = {0};
+		Matches m;
+		mapper.findMatches(probe, Eigen::Isometry3d::Identity(), true, m);
+		return m.edges.size();
+	};
+	EXPECT_EQ(matches(0, 1.1), 1u);  // seen from 10.0-10.1 m
+	EXPECT_EQ(matches(-2, 1.1), 0u);  // from 12.0-12.1 m: beyond 1.1 x 10.05 m
+	EXPECT_EQ(matches(-2, 1.25), 1u);  // ... within 1.25 x
+	EXPECT_EQ(matches(2, 1.1), 0u);  // from 8.0-8.1 m: 10.05 m is beyond 1.1 x that
+	EXPECT_EQ(matches(-2, 0), 1u);  // off: any range (A-LOAM)
+}
+
 TEST(Map, ScanToMapStaysBoundedOverFiveKilometres)
 {
 	// A scan-like point set (ground and two walls within 60 m) inserted every 5 m along a 5 km

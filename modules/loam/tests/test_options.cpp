@@ -89,6 +89,9 @@ TEST(Options, BadValuesNameSectionAndKey)
 	EXPECT_NE(errorOf("[loam.mapping]\nvoxel_size = 1.0\n").find("voxel_size"), std::string::npos);
 	EXPECT_NE(errorOf("[loam.mapping]\nknn = 17\n").find("[loam.mapping] knn"), std::string::npos);  // plane fits widen to 16
 	EXPECT_EQ(errorOf("[loam.mapping]\nknn = 16\n"), "");
+	EXPECT_NE(errorOf("[loam.mapping]\nedge_range_ratio = 0.5\n").find("[loam.mapping] edge_range_ratio: must be 0 (off) or >= 1"),
+		std::string::npos);
+	EXPECT_EQ(errorOf("[loam.mapping]\nedge_range_ratio = 1.1\n"), "");
 	EXPECT_NE(errorOf("[loam.mapping]\nedges = auto\nmin_edge_correspondences = 10\n").find("min_edge_correspondences"),
 		std::string::npos);
 	EXPECT_EQ(errorOf("[loam.mapping]\nedges = on\nmin_edge_correspondences = 10\n"), "");

@@ -70,6 +70,9 @@ class ScanToMap
 	/// fitted, or a flat line) and some of its map points were seen from beyond the reach.
 	bool seenFromTooFar(const Eigen::Vector3d& u, bool scan_silhouette, const std::uint32_t* tags, int k,
 		const Eigen::Isometry3d& T) const;
+	/// Whether some of the k map points nn (with their tags) were seen from a range more than
+	/// edge_range_ratio times or less than 1 / edge_range_ratio times the range of scan point p.
+	bool seenFromOtherRange(const Eigen::Vector3f& p, const Eigen::Vector3f* nn, const std::uint32_t* tags, int k) const;
 	/// Appends the line matches of `in` at pose T to out.edges.
 	void findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
 	/// Information on the translation along its weakest direction of these matches at T (robust-weighted

@@ -135,6 +135,11 @@ struct MappingOptions : public OptionSet
 	/// Silhouettes (an outline against a farther surface, FeatureSet) depend on the view too: they
 	/// move round a rounded body as the sensor moves. Not by default: tree trunks need them.
 	bool view_dependent_silhouettes = false;
+	/// An edge's apparent place depends on the range it is seen from (a real beam's footprint grows
+	/// with range and the nearest surface within it answers, so outlines and corners bloom; which
+	/// laser sees it changes with range): lines are matched only against map points seen from
+	/// within this factor of the edge point's own range (0: any; doc/LOAM.md "Known limits").
+	double edge_range_ratio = 0.0;
 	double plane_max_distance = 0.05;  ///< plane if every neighbour is this close to it [m]
 	double plane_line_ratio = 10.0;  ///< not a plane if largest eigenvalue > ratio * middle (a line)
 	int min_edge_correspondences = 0, min_plane_correspondences = 50;  ///< fewer: keep the odometry pose (edges are optional: some scenes have none)

@@ -189,7 +189,7 @@ struct PriorOptions : public OptionSet
 	/// An accepted external motion is also a residual of scan-to-map's solve (doc/LOAM.md "The external
 	/// motion as a prior"), with this standard deviation of its translation per frame along each axis
 	/// when the source tracked full_quality_tracked features (0: off, it only starts the registration;
-	/// ini/vlp16.ini: 0.02) [m] ...
+	/// ini/vlp16.ini and ini/sim-hdl64.ini: 0.02) [m] ...
 	double motion_sigma = 0;
 	double motion_sigma_deg = 0.005;  ///< ... and of its rotation [deg]
 	/// ... fewer tracked features scale its variances up by full_quality_tracked / tracked, and the

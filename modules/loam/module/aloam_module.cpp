@@ -4,6 +4,8 @@
 #include <vlo/loam/ring_count.h>
 #include <vlo/loam/rings.h>
 
+#include <utility>
+
 namespace vlo::loam
 {
 namespace
@@ -42,7 +44,9 @@ class AloamModule : public kernel::LidarOdometryModule
 		ring_check_->observe(frame.scan);
 		const auto motion = mount_.lidarMotion(vehicle_motion);
 		auto* ahead = dynamic_cast<PreparedLoamScan*>(prepared.get());
-		const auto r = ahead ? lo_->process(frame.t, std::move(ahead->features), motion) : lo_->process(frame.t, frame.scan, motion);
+		const loam::ExternalMotionQuality quality = std::exchange(quality_, {});
+		const auto r = ahead ? lo_->process(frame.t, std::move(ahead->features), motion, quality)
+							 : lo_->process(frame.t, frame.scan, motion, quality);
 
 		table.set("lo_status", std::string(toString(r.status)));
 		table.set("lo_prior", r.prior_source);
@@ -68,15 +72,29 @@ class AloamModule : public kernel::LidarOdometryModule
 		table.set("lo_odom_info_next", r.odometry.degeneracy.translation_information(1), 1);
 		// ... and edges = auto and the rounds of scan-to-map from this
 		table.set("lo_map_plane_info", r.mapping.plane_information, 1);
+		if (!r.motion_prior.empty()) setMotionPriorColumns(r, table);
 		return mount_.vehiclePose(r.pose);
 	}
 
+	void guessQuality(const kernel::MotionQuality& q) override { quality_ = {q.tracked, q.length_error}; }
+
    private:
+	/// Only where an external motion weighed in scan-to-map: a run without one (mode lo) has no such columns.
+	static void setMotionPriorColumns(const loam::LidarOdometryResult& r, kernel::FrameTable& table)
+	{
+		table.set("lo_motion_prior", r.motion_prior);
+		table.set("lo_motion_prior_info", r.motion_prior_information, 1);
+		table.set("lo_motion_prior_cost", r.motion_prior_cost, 2);
+		// ... against the map's own information along its weakest direction (the same units)
+		table.set("lo_map_info_min", r.mapping.degeneracy.translation_information(0), 1);
+	}
+
 	loam::LoamOptions opt_;
 	std::unique_ptr<loam::LidarOdometry> lo_;
 	std::optional<loam::ScanFeatureExtractor> ahead_;
 	std::optional<loam::RingModelCheck> ring_check_;
 	kernel::LidarMount mount_;
+	loam::ExternalMotionQuality quality_;  ///< of the next frame's guess (guessQuality)
 };
 VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "aloam", AloamModule);
 }  // namespace

@@ -6,6 +6,8 @@
 #include <vlo/loam/cold_start.h>
 #include <vlo/loam/deskew.h>
 
+#include <Eigen/Eigenvalues>
+
 namespace vlo::loam
 {
 LidarOdometry::LidarOdometry(const LoamOptions& o)
@@ -79,8 +81,25 @@ void LidarOdometry::checkExternalGuess(const FeatureSet& f, const Eigen::Isometr
 	}
 }
 
+ScanToMap::Result LidarOdometry::alignWithPrior(
+	const ScanToMap::Input& in, const Eigen::Isometry3d& guess, const PosePrior& prior, LidarOdometryResult& r) const
+{
+	ScanToMap::Result with = mapper_.align(in, guess, &prior);
+	// In squared loss scales: the matches' own measure of a large residual, whatever weight the prior has.
+	const double a = opt_.mapping.solver.loss_scale;
+	r.motion_prior_cost = with.prior_geometry_cost / (a * a);
+	if (with.ok && r.motion_prior_cost <= opt_.prior.max_geometry_cost)
+	{
+		r.motion_prior = "used";
+		return with;
+	}
+	r.motion_prior = "dropped";
+	return mapper_.align(in, guess);
+}
+
 // Scan-to-scan then scan-to-map for features f; sets the status and the odometry/map poses.
-void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, Eigen::Isometry3d& odom, Eigen::Isometry3d& pose)
+void LidarOdometry::registerFrame(
+	const FeatureSet& f, const PosePrior* prior, LidarOdometryResult& r, Eigen::Isometry3d& odom, Eigen::Isometry3d& pose)
 {
 	auto t0 = SteadyClock::now();
 	// Scan-to-scan, against the last usable scan (frames in between were skipped); not when an
@@ -109,7 +128,7 @@ void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, E
 	r.reason.clear();
 	if (!first && opt_.mapping.enabled)
 	{
-		r.mapping = mapper_.align(mapper_.prepare(f), pose);
+		r.mapping = prior ? alignWithPrior(mapper_.prepare(f), pose, *prior, r) : mapper_.align(mapper_.prepare(f), pose);
 		if (r.mapping.ok) pose = r.mapping.T_map_curr;
 		else r.status = LidarFrameStatus::Degraded, r.reason = r.mapping.reason;
 	}
@@ -118,14 +137,14 @@ void LidarOdometry::registerFrame(const FeatureSet& f, LidarOdometryResult& r, E
 	r.ms.add("mapping", lapMs(t0));
 }
 
-LidarOdometryResult LidarOdometry::process(
-	double t, const PointCloud& scan, const std::optional<Eigen::Isometry3d>& prior_motion)
+LidarOdometryResult LidarOdometry::process(double t, const PointCloud& scan, const std::optional<Eigen::Isometry3d>& prior_motion,
+	const ExternalMotionQuality& quality)
 {
-	return process(t, features_.extract(scan), prior_motion);
+	return process(t, features_.extract(scan), prior_motion, quality);
 }
 
-LidarOdometryResult LidarOdometry::process(
-	double t, ScanFeatures&& scan, const std::optional<Eigen::Isometry3d>& prior_motion)
+LidarOdometryResult LidarOdometry::process(double t, ScanFeatures&& scan, const std::optional<Eigen::Isometry3d>& prior_motion,
+	const ExternalMotionQuality& quality)
 {
 	LidarOdometryResult r;
 	r.t = t;
@@ -170,6 +189,16 @@ LidarOdometryResult LidarOdometry::process(
 	// The first sweep had no motion to be deskewed with: the second brings one (constant velocity),
 	// so in each of its passes the map and the reference restart from the first sweep deskewed.
 	const bool redo_first = undistort && first_raw_ && frames_ == 1;
+	// An accepted external motion also weighs in scan-to-map, as a prior, even where the check below
+	// starts the registration from constant velocity: the map fit that decides the start prefers
+	// LOAM's own motion where LOAM is biased (a VLP-16 among foliage under-measures every step).
+	std::optional<PosePrior> motion_prior;
+	if (r.prior_source == "external" && opt_.prior.motion_sigma > 0)
+	{
+		motion_prior = externalMotionPrior(pose_, r.guess, quality, opt_.prior, opt_.mapping.solver.loss_scale);
+		r.motion_prior_information =
+			Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(motion_prior->information.bottomRightCorner<3, 3>()).eigenvalues()(0);
+	}
 	if (const auto cv = prior_->setAside())
 	{
 		checkExternalGuess(raw, *cv, r);
@@ -187,7 +216,7 @@ LidarOdometryResult LidarOdometry::process(
 	for (r.passes = 1;; ++r.passes)
 	{
 		if (redo_first) restartFromFirst(deskewed(*first_raw_, motion));
-		registerFrame(f, r, odom, pose);
+		registerFrame(f, motion_prior ? &*motion_prior : nullptr, r, odom, pose);
 		if (!undistort) break;
 		const Eigen::Isometry3d found = pose_.inverse() * pose;
 		const Eigen::Isometry3d change = motion.inverse() * found;

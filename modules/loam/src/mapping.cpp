@@ -205,7 +205,7 @@ double ScanToMap::planeFit(const Input& in, const Eigen::Isometry3d& T) const
 	return sum;
 }
 
-bool ScanToMap::refine(const Input& in, Result& res) const
+bool ScanToMap::refine(const Input& in, Result& res, const PosePrior* prior) const
 {
 	Matches m;
 	Eigen::Isometry3d T = res.T_map_curr;
@@ -230,7 +230,7 @@ bool ScanToMap::refine(const Input& in, Result& res) const
 			return false;
 		}
 		const Eigen::Isometry3d before = T;
-		rep = solvePose(m, opt_.solver, T);
+		rep = solvePose(m, opt_.solver, T, prior);
 		res.iterations += rep.iterations;
 		++res.rounds;
 		if (roundConverged(before, T, opt_.solver)) break;  // the matches would not change
@@ -248,6 +248,7 @@ bool ScanToMap::refine(const Input& in, Result& res) const
 			break;
 	}
 	res.rms = rep.rms;
+	if (prior) res.prior_geometry_cost = geometryCostOfPrior(*prior, rep.JtJ, T);
 	res.degeneracy = analyseDegeneracy(rep.JtJ, opt_.degeneracy_threshold);
 	res.T_map_curr = T;
 	return true;
@@ -271,16 +272,16 @@ ScanToMap::Input ScanToMap::withoutArrivals(const Input& in, const Eigen::Isomet
 	return still;
 }
 
-ScanToMap::Result ScanToMap::align(const Input& in, const Eigen::Isometry3d& guess) const
+ScanToMap::Result ScanToMap::align(const Input& in, const Eigen::Isometry3d& guess, const PosePrior* prior) const
 {
 	Result res;
 	res.T_map_curr = guess;
 	// The guess is good to centimetres: enough to tell points that stand where the previous scan
 	// saw through (a vehicle that drove into that space) from the static scene.
 	if (opt_.drop_arrivals && last_free_)
-		res.ok = refine(withoutArrivals(in, guess, res), res);
+		res.ok = refine(withoutArrivals(in, guess, res), res, prior);
 	else
-		res.ok = refine(in, res);
+		res.ok = refine(in, res, prior);
 	return res;
 }
 

@@ -153,6 +153,10 @@ void PriorOptions::declare(OptionTable& t)
 	t.add("check_deviation", check_deviation, ">= 0", "an external motion this far from constant velocity is checked against the map, constant velocity kept where it fits better (0: no check) [m]");
 	t.add("check_deviation_deg", check_deviation_deg, ">= 0", "... or turning this differently [deg]");
 	t.add("check_margin", check_margin, ">= 0", "... better by this fraction of the external motion's fit");
+	t.add("motion_sigma", motion_sigma, ">= 0", "the external motion is a residual of scan-to-map's solve with this translation standard deviation per frame and axis at full quality (0: off, it only starts the registration) [m]");
+	t.add("motion_sigma_deg", motion_sigma_deg, "> 0", "... and this rotation standard deviation [deg]");
+	t.add("full_quality_tracked", full_quality_tracked, ">= 0", "... fewer features tracked by the motion's source scale the variances by this / tracked");
+	t.add("max_geometry_cost", max_geometry_cost, ">= 0", "where the prior raises the matches' cost by more than this many squared [loam.mapping] loss_scale, scan-to-map is solved again without it");
 }
 
 std::vector<std::pair<std::string, OptionSet*>> LoamOptions::parts()

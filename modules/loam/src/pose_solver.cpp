@@ -86,6 +86,40 @@ struct MatchProblem
 		return loam::normalEquations(m.edges, m.planes, w, T);
 	}
 };
+
+/// The matches and a pose prior: the prior's r^T I r is the last squared residual.
+struct MatchAndPriorProblem
+{
+	const Matches& m;
+	const PosePrior& prior;
+	void squaredResiduals(const Eigen::Isometry3d& T, std::vector<double>& s) const
+	{
+		squaredDistances(m.edges, m.planes, T, s);
+		s.push_back(prior.squaredMahalanobis(T));
+	}
+	PoseNormalEquations normalEquations(const std::vector<double>& w, const Eigen::Isometry3d& T) const
+	{
+		PoseNormalEquations ne = loam::normalEquations(m.edges, m.planes, w, T);
+		const Vector6d r = prior.residual(T);
+		ne.H += prior.information;
+		ne.g += prior.information * r;
+		ne.cost += 0.5 * r.dot(prior.information * r);
+		return ne;
+	}
+};
+
+/// The matches' robust weights; the prior's residual is weighed by its information alone: a
+/// robust loss on it would drop it exactly where the geometry pulls elsewhere.
+struct MatchAndPriorWeight
+{
+	RobustWeight matches;
+};
+
+void weigh(const std::vector<double>& s, const MatchAndPriorWeight& weight, std::vector<double>& w)
+{
+	vlo::weigh(s, weight.matches, w);
+	w.back() = 1.0;
+}
 }  // namespace
 
 bool roundConverged(const Eigen::Isometry3d& before, const Eigen::Isometry3d& after, const SolverOptions& o)
@@ -109,11 +143,14 @@ void evaluateMatches(const std::vector<EdgeMatch>& edges, const std::vector<Plan
 	rms = n ? std::sqrt(sum2 / static_cast<double>(n)) : 0.0;
 }
 
-SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3d& T)
+SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3d& T, const PosePrior* prior)
 {
 	SolveReport rep;
 	if (m.size() == 0) return rep;
-	rep.iterations = solveRobustPose(MatchProblem{m}, robustWeight(o), o.max_solver_iterations, T);
+	if (prior)
+		rep.iterations = solveRobustPose(MatchAndPriorProblem{m, *prior}, MatchAndPriorWeight{robustWeight(o)}, o.max_solver_iterations, T);
+	else
+		rep.iterations = solveRobustPose(MatchProblem{m}, robustWeight(o), o.max_solver_iterations, T);
 	evaluateMatches(m.edges, m.planes, o, T, rep.JtJ, rep.rms);
 	return rep;
 }

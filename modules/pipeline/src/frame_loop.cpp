@@ -17,6 +17,7 @@ namespace
 struct FrameInFlight : ReadFrame
 {
 	std::optional<Eigen::Isometry3d> motion;  ///< of the vehicle since the previous frame
+	kernel::MotionQuality quality;  ///< of that motion
 	kernel::FrameTable motion_row;  ///< the motion source's columns
 	double ms = 0;  ///< spent in the motion source
 };
@@ -48,6 +49,7 @@ void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOpt
 		if (stages.lidar)
 		{
 			const auto t0 = SteadyClock::now();
+			if (plan.bootstrapping && done.motion) stages.lidar->guessQuality(done.quality);
 			pose = stages.lidar->process(
 				done.frame, std::move(done.prepared), plan.bootstrapping ? done.motion : std::nullopt, lidarRow);
 			if (popt.map_every > 0 && done.frame.index % popt.map_every == 0)
@@ -106,6 +108,7 @@ void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOpt
 				undistorter.apply(cur->frame);
 				// Shared with the motion source, which may keep it for the next frame.
 				cur->motion = stages.motion->process(std::shared_ptr<const Frame>(cur, &cur->frame), cur->motion_row);
+				cur->quality = stages.motion->quality();
 				cur->ms = msSince(t0);
 			}
 			catch (...)

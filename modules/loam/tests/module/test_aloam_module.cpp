@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 #include <vlo/kernel/lidar_odometry.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "../synthetic_world.h"
 #include "../test_helpers.h"
 
@@ -45,9 +48,10 @@ Drive drive()
 	return d;
 }
 
-/// The module's vehicle pose at the second frame, and the prior it says it used.
+/// The module's vehicle pose at the second frame, and the prior it says it used; its frames.csv
+/// rows in `out` if given.
 std::pair<Eigen::Isometry3d, std::string> run(const Drive& d, const std::optional<Eigen::Isometry3d>& guess,
-	const std::vector<std::string>& sets = {})
+	const std::vector<std::string>& sets = {}, kernel::FrameTable* out = nullptr)
 {
 	auto config = kernel::RunConfig::fromString("[loam.scan]\nring_model = hdl64\n", "test.ini", sets);
 	auto lo = kernel::registry<kernel::LidarOdometryModule>().create("aloam", "test");
@@ -57,7 +61,9 @@ std::pair<Eigen::Isometry3d, std::string> run(const Drive& d, const std::optiona
 	table.newRow();
 	lo->process(d.a, nullptr, std::nullopt, table);
 	table.newRow();
+	if (guess) lo->guessQuality({50, std::nan("")});
 	const Eigen::Isometry3d pose = lo->process(d.b, nullptr, guess, table);
+	if (out) *out = table;
 	return {pose, table.cell(1, "lo_prior")};
 }
 }  // namespace
@@ -85,5 +91,21 @@ TEST(AloamModule, WithoutGuessOrWithConstantVelocityTheJumpIsMissed)
 	const auto [cv, priorCv] = run(d, d.vehicle_motion, {"loam.prior.source=constant_velocity", two, zero});
 	EXPECT_EQ(priorCv, "constant_velocity");  // told to ignore guesses
 	EXPECT_GT(translationError(cv, d.vehicle_motion), 0.05);
+}
+
+TEST(AloamModule, SaysHowTheGuessWeighedInScanToMap)
+{
+	// The guess is also a residual of scan-to-map, its information from the source's quality: 0.02 m
+	// against matches of the loss scale 0.05 m is 6.25 matches' worth per axis, and 50 features
+	// tracked of full_quality_tracked 100 halve it.
+	const Drive d = drive();
+	kernel::FrameTable with, without;
+	run(d, d.vehicle_motion, {"loam.prior.motion_sigma=0.02"}, &with);
+	EXPECT_EQ(with.cell(1, "lo_motion_prior"), "used");
+	EXPECT_EQ(with.cell(1, "lo_motion_prior_info"), "3.1");
+	// Without a guess (mode lo) the columns do not exist: its frames.csv is what it was.
+	run(d, std::nullopt, {"loam.prior.motion_sigma=0.02"}, &without);
+	const std::vector<std::string> columns = without.columns();
+	EXPECT_EQ(std::count(columns.begin(), columns.end(), "lo_motion_prior"), 0);
 }
 }  // namespace vlo::loam::test

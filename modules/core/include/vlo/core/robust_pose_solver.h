@@ -61,9 +61,10 @@ inline void weigh(const std::vector<double>& s, const RobustWeight& weight, std:
 /// Refines T; returns the iterations taken. Problem provides
 ///   void squaredResiduals(const Eigen::Isometry3d& T, std::vector<double>& s) const;
 ///   PoseNormalEquations normalEquations(const std::vector<double>& w, const Eigen::Isometry3d& T) const;
-/// with the same residual order in both.
-template <class Problem>
-int solveRobustPose(const Problem& problem, const RobustWeight& weight, int max_iterations, Eigen::Isometry3d& T)
+/// with the same residual order in both. Weight is a RobustWeight, or a type with its own
+/// weigh(s, weight, w) found by argument-dependent lookup (residuals weighed differently, e.g. a prior's).
+template <class Problem, class Weight>
+int solveRobustPose(const Problem& problem, const Weight& weight, int max_iterations, Eigen::Isometry3d& T)
 {
 	std::vector<double> s, s_next, w;  // squared residuals at T and at the step's pose; weights at T
 	// Poses composed over many frames drift off SO(3), and a transposed inverse amplifies that.

@@ -4,6 +4,7 @@
 // registry<LidarOdometryModule>().
 #include <vlo/core/frame.h>
 #include <vlo/kernel/frame_table.h>
+#include <vlo/kernel/motion_quality.h>
 #include <vlo/kernel/registry.h>
 #include <vlo/kernel/run_config.h>
 #include <vlo/kernel/sensor_mount.h>
@@ -57,5 +58,8 @@ class LidarOdometryModule
 	/// module then predicts on its own. Returns the vehicle pose relative to the vehicle at the first frame.
 	virtual Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
 		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) = 0;
+	/// What the motion source said of the next process()'s `vehicle_motion`; called just before it
+	/// when there is one. A module that weighs the guess may keep it (default: ignored).
+	virtual void guessQuality(const MotionQuality& /*quality*/) {}
 };
 }  // namespace vlo::kernel

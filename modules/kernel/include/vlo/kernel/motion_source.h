@@ -5,6 +5,7 @@
 #include <vlo/core/frame.h>
 #include <vlo/core/trajectory.h>
 #include <vlo/kernel/frame_table.h>
+#include <vlo/kernel/motion_quality.h>
 #include <vlo/kernel/registry.h>
 #include <vlo/kernel/run_config.h>
 
@@ -36,6 +37,8 @@ class MotionSource
 	/// previous one), when known; writes its diagnostics columns. The frame is shared, never changed
 	/// again, so that a source may keep it for the next frame without a copy.
 	virtual std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, FrameTable& table) = 0;
+	/// How far the last process()'s motion can be trusted (default: unknown).
+	virtual MotionQuality quality() const { return {}; }
 	/// Vehicle poses relative to the vehicle at the start, as written to trajectory_vo.tum.
 	virtual Trajectory trajectory() const = 0;
 	/// Name of that trajectory in plots.

@@ -13,6 +13,7 @@
 #include <vlo/loam/motion_prior.h>
 #include <vlo/loam/odometry.h>
 #include <vlo/loam/options.h>
+#include <vlo/loam/pose_prior.h>
 #include <vlo/loam/rings.h>
 #include <vlo/loam/scan_features.h>
 
@@ -40,6 +41,12 @@ struct LidarOdometryResult
 	double guess_fit_external = 0, guess_fit_constant_velocity = 0;
 	/// Where an external guess entered: odometry (scan-to-scan) | mapping (scan-to-map) | "" (none)
 	std::string external_stage;
+	/// The external motion as a residual of scan-to-map ([loam.prior] motion_sigma): "" (none) | used |
+	/// dropped (it pulled against the map: max_geometry_cost)
+	std::string motion_prior;
+	/// Its translation information along its weakest direction, in unit-weight plane matches (the
+	/// units of lo_map_plane_info), and how much it raised the matches' cost [loss_scale^2]
+	double motion_prior_information = 0, motion_prior_cost = 0;
 
 	std::size_t n_input = 0, n_valid = 0;  ///< points given / kept after preprocessing
 	int n_rings = 0;  ///< populated rings
@@ -62,10 +69,13 @@ class LidarOdometry
 	/// Processes the scan taken at time t (LiDAR frame). `prior_motion` is the caller's guess of
 	/// the motion since the previous frame (the pose of this LiDAR frame in the previous one);
 	/// the ConstantVelocity prior ignores it. Never throws on bad data: see status and reason.
-	LidarOdometryResult process(double t, const PointCloud& scan, const std::optional<Eigen::Isometry3d>& prior_motion);
+	/// `quality` is what the guess's source says of it, which weighs it as a prior of scan-to-map.
+	LidarOdometryResult process(double t, const PointCloud& scan, const std::optional<Eigen::Isometry3d>& prior_motion,
+		const ExternalMotionQuality& quality = {});
 	/// The same from the scan's features computed ahead (a ScanFeatureExtractor with the same
 	/// options): identical results. The features are consumed.
-	LidarOdometryResult process(double t, ScanFeatures&& scan, const std::optional<Eigen::Isometry3d>& prior_motion);
+	LidarOdometryResult process(double t, ScanFeatures&& scan, const std::optional<Eigen::Isometry3d>& prior_motion,
+		const ExternalMotionQuality& quality = {});
 
 	void reset();
 	std::size_t frames() const { return frames_; }
@@ -77,7 +87,12 @@ class LidarOdometry
 
    private:
 	LidarOdometryResult skip(LidarOdometryResult r, const std::string& why);
-	void registerFrame(const FeatureSet& f, LidarOdometryResult& r, Eigen::Isometry3d& odom, Eigen::Isometry3d& pose);
+	void registerFrame(const FeatureSet& f, const PosePrior* prior, LidarOdometryResult& r, Eigen::Isometry3d& odom,
+		Eigen::Isometry3d& pose);
+	/// Scan-to-map from `guess` with the prior, and again without it where the prior pulls against
+	/// the map (max_geometry_cost).
+	ScanToMap::Result alignWithPrior(const ScanToMap::Input& in, const Eigen::Isometry3d& guess, const PosePrior& prior,
+		LidarOdometryResult& r) const;
 	/// An external guess far from constant velocity: LOAM starts from constant velocity instead where
 	/// that fits the map better ([loam.prior] check_*).
 	void checkExternalGuess(const FeatureSet& f, const Eigen::Isometry3d& cv, LidarOdometryResult& r) const;

@@ -5,6 +5,7 @@
 #include <vlo/loam/degeneracy.h>
 #include <vlo/loam/free_space.h>
 #include <vlo/loam/options.h>
+#include <vlo/loam/pose_prior.h>
 #include <vlo/loam/pose_solver.h>
 #include <vlo/loam/types.h>
 #include <vlo/loam/voxel_map.h>
@@ -36,6 +37,8 @@ class ScanToMap
 		bool used_edges = false;  ///< edge matches were sought (edges = on, or auto and the planes are weak)
 		double plane_information = 0;  ///< the planes' translation information at the guess
 		double rms = 0;  ///< distance RMS at the solution [m]
+		/// With a pose prior: how much it raised the matches' cost (geometryCostOfPrior) [m^2]
+		double prior_geometry_cost = 0;
 		Degeneracy degeneracy;
 		std::vector<Eigen::Vector3f> arrived;  ///< points in the previous scan's free space, not matched (map frame)
 	};
@@ -43,8 +46,9 @@ class ScanToMap
 	explicit ScanToMap(const MappingOptions& o);
 
 	Input prepare(const FeatureSet& f) const;
-	/// Refines the pose of the scan in the map from `guess`; does not change the map.
-	Result align(const Input& in, const Eigen::Isometry3d& guess) const;
+	/// Refines the pose of the scan in the map from `guess`, with `prior` a residual of the solve
+	/// if given; does not change the map.
+	Result align(const Input& in, const Eigen::Isometry3d& guess, const PosePrior* prior = nullptr) const;
 	/// Adds the scan's less-sharp and less-flat points at pose T_map_curr, except those within
 	/// arrival_radius of `arrived` (map frame), and drops the far map.
 	void insert(const FeatureSet& f, const Eigen::Isometry3d& T_map_curr, const std::vector<Eigen::Vector3f>& arrived = {});
@@ -81,7 +85,7 @@ class ScanToMap
 		const Eigen::Isometry3d& T) const;
 	/// Correspondence + solve rounds from res.T_map_curr until converged; false (res.reason set)
 	/// when too few matches.
-	bool refine(const Input& in, Result& res) const;
+	bool refine(const Input& in, Result& res, const PosePrior* prior) const;
 	/// `in` without the points that lie, at pose T, in the previous scan's free space: something
 	/// moved there (they go to res.arrived).
 	Input withoutArrivals(const Input& in, const Eigen::Isometry3d& T, Result& res) const;

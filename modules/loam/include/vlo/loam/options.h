@@ -191,6 +191,19 @@ struct PriorOptions : public OptionSet
 	double check_deviation = 0.05;
 	double check_deviation_deg = 0.3;  ///< ... [deg]
 	double check_margin = 0.05;  ///< ... by this fraction
+	/// An accepted external motion is also a residual of scan-to-map's solve (doc/LOAM.md "The external
+	/// motion as a prior"), with this standard deviation of its translation per frame along each axis
+	/// when the source tracked full_quality_tracked features (0: off, it only starts the registration;
+	/// ini/vlp16.ini and ini/sim-hdl64.ini: 0.02) [m] ...
+	double motion_sigma = 0;
+	double motion_sigma_deg = 0.005;  ///< ... and of its rotation [deg]
+	/// ... fewer tracked features scale its variances up by full_quality_tracked / tracked, and the
+	/// source's relative error of the motion's length (a scale corrector's) adds along it. A line or
+	/// plane match counts with the standard deviation [loam.mapping] loss_scale.
+	double full_quality_tracked = 100;
+	/// Where the prior raises the matches' cost by more than this many squared loss scales (it pulls
+	/// against directions the map constrains), scan-to-map is solved again without it.
+	double max_geometry_cost = 100;
 
    protected:
 	void declare(OptionTable& t) override;

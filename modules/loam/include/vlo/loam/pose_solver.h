@@ -3,6 +3,7 @@
 // (vlo/core/robust_pose_solver.h) with J^T W J accumulated in one pass over the matches.
 #include <vlo/loam/correspondences.h>
 #include <vlo/loam/options.h>
+#include <vlo/loam/pose_prior.h>
 
 #include <Eigen/Geometry>
 
@@ -15,8 +16,9 @@ struct SolveReport
 	Eigen::Matrix<double, 6, 6> JtJ = Eigen::Matrix<double, 6, 6>::Zero();  ///< robust-weighted, see Degeneracy
 };
 
-/// Refines T (source -> target) so that T * p lies on the matched lines and planes.
-SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3d& T);
+/// Refines T (source -> target) so that T * p lies on the matched lines and planes, and, with a
+/// prior, near the prior's pose as its information says. The report's JtJ is the matches' alone.
+SolveReport solvePose(const Matches& m, const SolverOptions& o, Eigen::Isometry3d& T, const PosePrior* prior = nullptr);
 
 /// Whether a round moved the pose by less than the convergence thresholds.
 bool roundConverged(const Eigen::Isometry3d& before, const Eigen::Isometry3d& after, const SolverOptions& o);

@@ -236,6 +236,7 @@ bool ScanToMap::refine(const Input& in, Result& res) const
 	}
 	res.rms = rep.rms;
 	res.degeneracy = analyseDegeneracy(rep.JtJ, opt_.degeneracy_threshold);
+	res.JtJ = rep.JtJ;
 	res.T_map_curr = T;
 	return true;
 }

@@ -37,6 +37,9 @@ class ScanToMap
 		double plane_information = 0;  ///< the planes' translation information at the guess
 		double rms = 0;  ///< distance RMS at the solution [m]
 		Degeneracy degeneracy;
+		/// Robust-weighted J^T J of the last round at the solution, over [rotation; translation] of
+		/// T_map_curr as Degeneracy's (the pose's information up to the residuals' variance).
+		Eigen::Matrix<double, 6, 6> JtJ = Eigen::Matrix<double, 6, 6>::Zero();
 		std::vector<Eigen::Vector3f> arrived;  ///< points in the previous scan's free space, not matched (map frame)
 	};
 

@@ -6,7 +6,10 @@
 // Counters: Ceres iterations, and the RMS position error of the keyframes before and after.
 // BM_PlaceQuery: one keyframe's place recognition (its Scan Context, the ring keys of 2000 earlier
 // keyframes, 10 full descriptors), [loop] query_shift off (0) and on (3.5 m: three queries).
+// BM_OdometryChainAdd: what addFrame adds per frame on the odometry's thread for the odometry edges
+// (the frame's information inverted, its covariance composed onto the chain's).
 #include <benchmark/benchmark.h>
+#include <vlo/loop/odometry_chain.h>
 #include <vlo/loop/place_recognition.h>
 #include <vlo/loop/pose_graph.h>
 
@@ -53,7 +56,7 @@ Problem buildProblem()
 			step.linear() = Eigen::AngleAxisd(0.02 * kDeg * kStep, Eigen::Vector3d::UnitZ()) * step.linear();
 			odometry = odometry * step;
 			p.graph.addNode(odometry);
-			p.graph.addEdge(k - 1, k, step, odometryInformation(kStep, 0.01, 0.05 * kDeg), 0);
+			p.graph.addEdge(k - 1, k, step, invertPositive(distanceCovariance(kStep, 0.01, 0.05 * kDeg)), 0);
 		}
 		else
 			p.graph.addNode(odometry);
@@ -128,5 +131,20 @@ void BM_PlaceQuery(benchmark::State& state)
 }
 BENCHMARK(BM_PlaceQuery)->Arg(0)->Arg(35)->Unit(benchmark::kMillisecond);
 }  // namespace
+
+void BM_OdometryChainAdd(benchmark::State& state)
+{
+	Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Random();
+	const Matrix6d information = M * M.transpose() * 1e4 + Matrix6d::Identity();
+	const Eigen::Isometry3d motion = circuitPose(1) * circuitPose(0).inverse();
+	OdometryChain chain{LoopOptions{}};
+	int n = 0;
+	for (auto _ : state)
+	{
+		chain.add(motion, information);
+		if (++n % 3 == 0) benchmark::DoNotOptimize(chain.take());
+	}
+}
+BENCHMARK(BM_OdometryChainAdd)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

@@ -49,7 +49,7 @@ int main(int argc, char** argv)
 	{
 		if (times) pipeline::applyPointTimes(f.scan, pipeline::PointTimeOptions{});
 		const auto t0 = std::chrono::steady_clock::now();
-		lc.addFrame(static_cast<long long>(i), f.t, odo[i].pose, f.scan, f.rig.vehicle_T_lidar);
+		lc.addFrame(static_cast<long long>(i), f.t, odo[i].pose, std::nullopt, f.scan, f.rig.vehicle_T_lidar);
 		const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 		add_ms += ms;
 		max_add = std::max(max_add, ms);

@@ -6,6 +6,15 @@ namespace vlo::icp
 {
 namespace
 {
+/// The last J^T J of the registration (over a left twist of the LiDAR in the map) as the information
+/// of the LiDAR's motion since the previous frame, the map and the previous pose held fixed.
+Matrix6d lidarMotionInformation(const IcpResult& r)
+{
+	const Matrix6d JtJ = informationFromLeftTwist(r.registration.JtJ, r.registration.pose.translation());
+	return relativeInformation(registrationInformation(JtJ, r.registration.correspondences, r.registration.rms),
+		r.pose * r.motion.inverse());
+}
+
 class IcpModule : public kernel::LidarOdometryModule
 {
    public:
@@ -15,7 +24,7 @@ class IcpModule : public kernel::LidarOdometryModule
 		odometry_ = std::make_unique<icp::IcpOdometry>(opt_);
 	}
 
-	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> /*prepared*/,
+	kernel::LidarOdometryStep process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> /*prepared*/,
 		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
 	{
 		mount_.observe(frame);
@@ -34,7 +43,10 @@ class IcpModule : public kernel::LidarOdometryModule
 		table.set("lo_map_points", static_cast<long long>(r.map_points));
 		table.setTimes("lo_", r.ms);
 		table.set("lo_reason", r.reason);
-		return mount_.vehiclePose(r.pose);
+		kernel::LidarOdometryStep step{mount_.vehiclePose(r.pose), std::nullopt};
+		if (r.status == LidarFrameStatus::Ok)
+			step.information = mount_.vehicleInformation(lidarMotionInformation(r), r.motion);
+		return step;
 	}
 
    private:

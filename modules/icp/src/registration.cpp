@@ -63,6 +63,7 @@ RegistrationResult alignToMap(
 		const Step s = buildSystem(moved, map, params);
 		res.correspondences = s.n;
 		res.rms = s.n ? std::sqrt(s.sum_e2 / static_cast<double>(s.n)) : 0.0;
+		res.JtJ = s.JtJ;
 		if (s.n < params.min_correspondences) break;
 		const Vector6d dx = s.JtJ.ldlt().solve(-s.Jtr);
 		if (!dx.allFinite()) break;

@@ -17,6 +17,18 @@ struct PreparedLoamScan : kernel::PreparedScan
 	loam::ScanFeatures features;
 };
 
+/// Scan-to-map's J^T J (over [rotation; translation] of the LiDAR in the map, the rotation about the
+/// LiDAR in the map's axes: delta's parts swapped) as the information of the LiDAR's motion since the
+/// previous frame, the map and the previous pose held fixed.
+Matrix6d lidarMotionInformation(const loam::LidarOdometryResult& r)
+{
+	Matrix6d JtJ;
+	JtJ << r.mapping.JtJ.bottomRightCorner<3, 3>(), r.mapping.JtJ.bottomLeftCorner<3, 3>(),
+		r.mapping.JtJ.topRightCorner<3, 3>(), r.mapping.JtJ.topLeftCorner<3, 3>();
+	const auto pairs = static_cast<std::size_t>(r.mapping.n_edges + r.mapping.n_planes);
+	return relativeInformation(registrationInformation(JtJ, pairs, r.mapping.rms), r.pose * r.motion.inverse());
+}
+
 class AloamModule : public kernel::LidarOdometryModule
 {
    public:
@@ -37,7 +49,7 @@ class AloamModule : public kernel::LidarOdometryModule
 		return std::make_unique<PreparedLoamScan>(ahead_->extract(frame.scan));
 	}
 
-	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
+	kernel::LidarOdometryStep process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
 		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
 	{
 		mount_.observe(frame);
@@ -73,7 +85,10 @@ class AloamModule : public kernel::LidarOdometryModule
 		// ... and edges = auto and the rounds of scan-to-map from this
 		table.set("lo_map_plane_info", r.mapping.plane_information, 1);
 		if (!r.motion_prior.empty()) setMotionPriorColumns(r, table);
-		return mount_.vehiclePose(r.pose);
+		kernel::LidarOdometryStep step{mount_.vehiclePose(r.pose), std::nullopt};
+		if (r.status == LidarFrameStatus::Ok && r.mapping.ok)
+			step.information = mount_.vehicleInformation(lidarMotionInformation(r), r.motion);
+		return step;
 	}
 
 	void guessQuality(const kernel::MotionQuality& q) override { quality_ = {q.tracked, q.length_error}; }

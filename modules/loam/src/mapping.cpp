@@ -250,6 +250,7 @@ bool ScanToMap::refine(const Input& in, Result& res, const PosePrior* prior) con
 	res.rms = rep.rms;
 	if (prior) res.prior_geometry_cost = geometryCostOfPrior(*prior, rep.JtJ, T);
 	res.degeneracy = analyseDegeneracy(rep.JtJ, opt_.degeneracy_threshold);
+	res.JtJ = rep.JtJ;
 	res.T_map_curr = T;
 	return true;
 }

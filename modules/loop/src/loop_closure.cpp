@@ -1,6 +1,7 @@
 #include <vlo/loop/keyframe.h>
 #include <vlo/loop/loop_closure.h>
 #include <vlo/loop/loop_worker.h>
+#include <vlo/loop/odometry_chain.h>
 
 #include <condition_variable>
 #include <deque>
@@ -60,7 +61,7 @@ Eigen::Isometry3d blend(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, 
 struct LoopClosure::Impl
 {
 	explicit Impl(const LoopOptions& o)
-		: options(o), selector(o.keyframe_distance, o.keyframe_angle_deg * M_PI / 180), worker(o)
+		: options(o), selector(o.keyframe_distance, o.keyframe_angle_deg * M_PI / 180), chain(o), worker(o)
 	{
 	}
 
@@ -105,6 +106,7 @@ struct LoopClosure::Impl
 
 	const LoopOptions options;
 	KeyframeSelector selector;
+	OdometryChain chain;  ///< the odometry's covariance since the last keyframe
 	// The odometry thread's: every frame, the last frame's pose and time, the path.
 	std::vector<FrameRecord> frames;
 	bool has_previous = false;
@@ -137,11 +139,15 @@ LoopClosure::LoopClosure(const LoopOptions& options)
 
 LoopClosure::~LoopClosure() { impl_->join(); }
 
-void LoopClosure::addFrame(long long frame, double t, const Eigen::Isometry3d& world_T_vehicle, const PointCloud& scan,
-	const Eigen::Isometry3d& vehicle_T_lidar)
+void LoopClosure::addFrame(long long frame, double t, const Eigen::Isometry3d& world_T_vehicle,
+	const std::optional<Matrix6d>& information, const PointCloud& scan, const Eigen::Isometry3d& vehicle_T_lidar)
 {
 	Impl& m = *impl_;
-	if (m.has_previous) m.path += (world_T_vehicle.translation() - m.previous.translation()).norm();
+	if (m.has_previous)
+	{
+		m.path += (world_T_vehicle.translation() - m.previous.translation()).norm();
+		m.chain.add(m.previous.inverse() * world_T_vehicle, information);
+	}
 	if (m.selector.take(world_T_vehicle))
 	{
 		PendingKeyframe next;
@@ -150,6 +156,7 @@ void LoopClosure::addFrame(long long frame, double t, const Eigen::Isometry3d& w
 		kf.t = t;
 		kf.odometry = world_T_vehicle;
 		kf.path = m.path;
+		kf.odometry_covariance = m.chain.take();
 		// The LiDAR's motion over the last frame interval, from the odometry (none for the first frame).
 		if (m.has_previous)
 		{

@@ -34,10 +34,7 @@ void LoopWorker::process(Keyframe keyframe)
 		// A new node continues the corrected chain with the odometry's last step.
 		const Eigen::Isometry3d step = keyframes_[k - 1].odometry.inverse() * keyframe.odometry;
 		graph_.addNode(graph_.pose(k - 1) * step);
-		graph_.addEdge(k - 1, k, step,
-			odometryInformation(keyframe.path - keyframes_[k - 1].path, options_.odometry_sigma_per_metre,
-				options_.odometry_sigma_deg_per_metre * M_PI / 180),
-			0);
+		graph_.addEdge(k - 1, k, step, invertPositive(keyframe.odometry_covariance), 0);
 	}
 	const auto candidate = places_.addAndQuery(keyframe.points, keyframe.path);
 	keyframes_.push_back(std::move(keyframe));

@@ -22,8 +22,10 @@ void LoopOptions::declare(OptionTable& t)
 	t.add("min_constraint", min_constraint, "[0, 1]", "weakest over strongest direction of the registration: less is degenerate");
 	t.add("max_drift_per_metre", max_drift_per_metre, ">= 0", "a loop's correction must be within this times the path between the visits ...");
 	t.add("max_drift_floor", max_drift_floor, ">= 0", "... plus this [m]");
-	t.add("odometry_sigma_per_metre", odometry_sigma_per_metre, "> 0", "translation noise of odometry edges [m/m]");
-	t.add("odometry_sigma_deg_per_metre", odometry_sigma_deg_per_metre, "> 0", "rotation noise of odometry edges [deg/m]");
+	t.add("odometry_floor_per_metre", odometry_floor_per_metre, ">= 0", "translation noise per metre added to each frame's registration covariance (a floor) [m/m]");
+	t.add("odometry_floor_deg_per_metre", odometry_floor_deg_per_metre, ">= 0", "... and rotation noise [deg/m]");
+	t.add("odometry_sigma_per_metre", odometry_sigma_per_metre, "> 0", "translation noise per metre of a frame without registration information [m/m]");
+	t.add("odometry_sigma_deg_per_metre", odometry_sigma_deg_per_metre, "> 0", "... and rotation noise [deg/m]");
 	t.add("loop_huber", loop_huber, "> 0", "robust (Huber) loss of loop edges [sigmas]");
 }
 }  // namespace vlo::loop

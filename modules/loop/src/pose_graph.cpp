@@ -4,7 +4,6 @@
 #include <ceres/ceres.h>
 
 #include <Eigen/Cholesky>
-#include <algorithm>
 
 namespace vlo::loop
 {
@@ -109,12 +108,4 @@ Eigen::Isometry3d PoseGraph::pose(std::size_t node) const
 	return T;
 }
 
-Matrix6d odometryInformation(double distance, double sigma_per_metre, double sigma_rad_per_metre, double floor_distance)
-{
-	const double d = std::max(distance, floor_distance);
-	const double st = sigma_per_metre * d, sr = sigma_rad_per_metre * d;
-	Matrix6d info = Matrix6d::Zero();
-	info.diagonal() << 1 / (st * st), 1 / (st * st), 1 / (st * st), 1 / (sr * sr), 1 / (sr * sr), 1 / (sr * sr);
-	return info;
-}
 }  // namespace vlo::loop

@@ -24,11 +24,6 @@ constexpr int kIterations = 30;
 constexpr double kQueryVoxelRatio = 3.0;
 // Fine stage (point to plane) gate before the last one at inlier_distance [m].
 constexpr double kFineGate = 1.0;
-// A loop edge weighs as this many independent points: the scan's points are not independent (their
-// errors are the calibration's and the surfaces', shared by neighbours), and a weight from all of them
-// would make one loop outweigh kilometres of odometry.
-constexpr double kEffectivePoints = 100.0;
-constexpr double kMinSigma = 0.01;  // [m] floor of the point-to-plane noise
 // [m] how far a registration from the descriptor's guess may move: beyond, it would be no verification.
 constexpr double kReach = 10.0;
 
@@ -154,8 +149,9 @@ Verification verifyLoop(const ScanPoints& current, const icp::Points& submap, co
 	else
 	{
 		r.accepted = true;
-		const double sigma = std::max(fit.rms, kMinSigma);
-		v.information = fit.information * (kEffectivePoints / static_cast<double>(fit.pairs)) / (sigma * sigma);
+		// Weighed as the odometry's registrations are (registrationInformation): one loop does not
+		// outweigh kilometres of odometry.
+		v.information = registrationInformation(fit.information, fit.pairs, fit.rms);
 	}
 	return v;
 }

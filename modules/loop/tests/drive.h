@@ -40,9 +40,14 @@ inline Trajectory samplePath(const std::function<Eigen::Isometry3d(double)>& at,
 	return t;
 }
 
+/// Each frame's information given to addFrame, from the frame's index and the odometry's poses.
+using FrameInformation = std::function<std::optional<Matrix6d>(std::size_t frame, const Trajectory& odometry)>;
+
 /// `pause_ms` after each frame: an odometry slower than the loop thread (0: as fast as it goes).
+/// Without `information` the odometry edges get the per-metre model.
 inline DriveResult drive(const World& world, const Trajectory& truth, double scale, double yaw_bias_per_metre,
-	const LoopOptions& options = LoopOptions{}, unsigned seed = 11, int pause_ms = 0)
+	const LoopOptions& options = LoopOptions{}, unsigned seed = 11, int pause_ms = 0,
+	const FrameInformation& information = {})
 {
 	DriveResult r;
 	r.truth = truth;
@@ -56,6 +61,7 @@ inline DriveResult drive(const World& world, const Trajectory& truth, double sca
 	for (std::size_t i = 0; i < truth.size(); ++i)
 	{
 		loop.addFrame(static_cast<long long>(i), truth[i].t, r.odometry[i].pose,
+			information && i > 0 ? information(i, r.odometry) : std::nullopt,
 			keyframe.take(r.odometry[i].pose) ? scanFrom(world, truth[i].pose * vehicle_T_lidar, rng) : PointCloud{},
 			vehicle_T_lidar);
 		if (pause_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(pause_ms));

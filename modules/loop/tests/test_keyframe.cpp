@@ -45,7 +45,7 @@ TEST(KeyframeScan, ThinsDeskewsAndMovesIntoTheVehicleFrame)
 TEST(LoopClosure, WithoutFinishTheDestructorJoins)
 {
 	LoopClosure loop{LoopOptions{}};
-	loop.addFrame(0, 0.0, pose2d(0, 0, 0), PointCloud{}, Eigen::Isometry3d::Identity());
+	loop.addFrame(0, 0.0, pose2d(0, 0, 0), std::nullopt, PointCloud{}, Eigen::Isometry3d::Identity());
 	EXPECT_EQ(loop.keyframes(), 1u);
 }
 

@@ -1,11 +1,14 @@
 // The pose graph: a loop edge spreads the odometry's error over the chain, the first node stays.
 #include <gtest/gtest.h>
+#include <vlo/loop/odometry_chain.h>
 #include <vlo/loop/pose_graph.h>
 
 #include "synthetic_places.h"
 
 using namespace vlo::loop;
 using namespace vlo::loop::test;
+using vlo::invertPositive;
+using vlo::Matrix6d;
 
 TEST(PoseGraph, ALoopEdgeClosesADriftingChain)
 {
@@ -15,7 +18,7 @@ TEST(PoseGraph, ALoopEdgeClosesADriftingChain)
 	for (int k = 0; k <= 10; ++k) truth.push_back(pose2d(k <= 5 ? k : 10 - k, 0, k <= 5 ? 0 : M_PI));
 	Eigen::Isometry3d odometry = truth[0];
 	graph.addNode(odometry);
-	const Matrix6d step_information = odometryInformation(1.0, 0.01, 0.001);
+	const Matrix6d step_information = invertPositive(distanceCovariance(1.0, 0.01, 0.001));
 	for (int k = 1; k <= 10; ++k)
 	{
 		Eigen::Isometry3d step = truth[k - 1].inverse() * truth[k];
@@ -49,11 +52,11 @@ TEST(PoseGraph, ALoopAgainstTheOdometryMeetsItInTheMiddle)
 	EXPECT_NEAR(graph.pose(1).translation().y(), 0.0, 1e-9);
 }
 
-TEST(PoseGraph, OdometryInformationGrowsWithTheDistance)
+TEST(PoseGraph, DistanceCovarianceGrowsWithTheDistance)
 {
-	const Matrix6d info = odometryInformation(2.0, 0.01, 0.001);
-	EXPECT_NEAR(info(0, 0), 1 / (0.02 * 0.02), 1e-6);
-	EXPECT_NEAR(info(5, 5), 1 / (0.002 * 0.002), 1e-3);
-	// Below the floor distance (0.1 m) it stops growing.
-	EXPECT_NEAR(odometryInformation(0.0, 0.01, 0.001)(0, 0), 1 / (0.001 * 0.001), 1e-3);
+	const Matrix6d cov = distanceCovariance(2.0, 0.01, 0.001);
+	EXPECT_NEAR(cov(0, 0), 0.02 * 0.02, 1e-12);
+	EXPECT_NEAR(cov(5, 5), 0.002 * 0.002, 1e-12);
+	// Below the floor distance (0.1 m) it stops shrinking.
+	EXPECT_NEAR(distanceCovariance(0.0, 0.01, 0.001)(0, 0), 0.001 * 0.001, 1e-15);
 }

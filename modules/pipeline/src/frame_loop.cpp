@@ -45,13 +45,16 @@ void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOpt
 	const auto lidarAndRow = [&](FrameInFlight& done) {
 		kernel::FrameTable lidarRow;
 		std::optional<Eigen::Isometry3d> pose;
+		std::optional<Matrix6d> information;  // of the vehicle's motion since the previous frame
 		double lidarMs = 0;
 		if (stages.lidar)
 		{
 			const auto t0 = SteadyClock::now();
 			if (plan.bootstrapping && done.motion) stages.lidar->guessQuality(done.quality);
-			pose = stages.lidar->process(
+			kernel::LidarOdometryStep step = stages.lidar->process(
 				done.frame, std::move(done.prepared), plan.bootstrapping ? done.motion : std::nullopt, lidarRow);
+			pose = step.pose;
+			information = step.information;
 			if (popt.map_every > 0 && done.frame.index % popt.map_every == 0)
 				map.insert(done.frame.scan, *pose * done.frame.rig.vehicle_T_lidar, static_cast<std::uint32_t>(outputs.lidar.size()));
 			lidarMs = done.prepared_ms + msSince(t0);
@@ -60,8 +63,8 @@ void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOpt
 		if (stages.loop && pose)
 		{
 			const auto t0 = SteadyClock::now();
-			stages.loop->addFrame(static_cast<long long>(done.frame.index), done.frame.t, *pose, done.frame.scan,
-				done.frame.rig.vehicle_T_lidar);
+			stages.loop->addFrame(static_cast<long long>(done.frame.index), done.frame.t, *pose, information,
+				done.frame.scan, done.frame.rig.vehicle_T_lidar);
 			loopMs = msSince(t0);
 		}
 		auto& table = outputs.table;

@@ -117,12 +117,12 @@ class FakeLidar : public LidarOdometryModule
 {
    public:
 	void configure(kernel::RunConfig&) override {}
-	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> /*prepared*/,
+	kernel::LidarOdometryStep process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> /*prepared*/,
 		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
 	{
 		seen.lidar_guesses.push_back(vehicle_motion);
 		table.set("lo_fake", static_cast<long long>(frame.scan.size()));
-		return Eigen::Isometry3d(Eigen::Translation3d(kStep * double(frame.index), 0, 0));
+		return {Eigen::Isometry3d(Eigen::Translation3d(kStep * double(frame.index), 0, 0)), std::nullopt};
 	}
 };
 VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "fake_lidar", FakeLidar);
@@ -131,7 +131,7 @@ VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "fake_lidar", FakeLidar);
 class FailingLidar : public FakeLidar
 {
    public:
-	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
+	kernel::LidarOdometryStep process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
 		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
 	{
 		if (frame.index == 3) failInput("lidar", "fails at frame 3");
@@ -144,7 +144,7 @@ VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "failing_lidar", FailingLidar);
 class InterruptedLidar : public FakeLidar
 {
    public:
-	Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
+	kernel::LidarOdometryStep process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
 		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
 	{
 		if (frame.index == 3) std::raise(SIGINT);

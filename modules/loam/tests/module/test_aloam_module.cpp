@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 #include <vlo/kernel/lidar_odometry.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <tuple>
 
 #include "../synthetic_world.h"
 #include "../test_helpers.h"
@@ -48,10 +51,11 @@ Drive drive()
 	return d;
 }
 
-/// The module's vehicle pose at the second frame, and the prior it says it used; its frames.csv
-/// rows in `out` if given.
-std::pair<Eigen::Isometry3d, std::string> run(const Drive& d, const std::optional<Eigen::Isometry3d>& guess,
-	const std::vector<std::string>& sets = {}, kernel::FrameTable* out = nullptr)
+/// The module's steps at both frames, and the prior it says it used at the second; its frames.csv rows
+/// in `out` if given.
+std::tuple<kernel::LidarOdometryStep, kernel::LidarOdometryStep, std::string> steps(const Drive& d,
+	const std::optional<Eigen::Isometry3d>& guess, const std::vector<std::string>& sets = {},
+	kernel::FrameTable* out = nullptr)
 {
 	auto config = kernel::RunConfig::fromString("[loam.scan]\nring_model = hdl64\n", "test.ini", sets);
 	auto lo = kernel::registry<kernel::LidarOdometryModule>().create("aloam", "test");
@@ -59,12 +63,20 @@ std::pair<Eigen::Isometry3d, std::string> run(const Drive& d, const std::optiona
 	config.checkAllKeysUsed();
 	kernel::FrameTable table;
 	table.newRow();
-	lo->process(d.a, nullptr, std::nullopt, table);
+	kernel::LidarOdometryStep first = lo->process(d.a, nullptr, std::nullopt, table);
 	table.newRow();
 	if (guess) lo->guessQuality({50, std::nan("")});
-	const Eigen::Isometry3d pose = lo->process(d.b, nullptr, guess, table);
+	kernel::LidarOdometryStep second = lo->process(d.b, nullptr, guess, table);
 	if (out) *out = table;
-	return {pose, table.cell(1, "lo_prior")};
+	return {first, second, table.cell(1, "lo_prior")};
+}
+
+/// The module's vehicle pose at the second frame, and the prior it says it used.
+std::pair<Eigen::Isometry3d, std::string> run(const Drive& d, const std::optional<Eigen::Isometry3d>& guess,
+	const std::vector<std::string>& sets = {}, kernel::FrameTable* out = nullptr)
+{
+	const auto [first, second, prior] = steps(d, guess, sets, out);
+	return {second.pose, prior};
 }
 }  // namespace
 
@@ -107,5 +119,25 @@ TEST(AloamModule, SaysHowTheGuessWeighedInScanToMap)
 	run(d, std::nullopt, {"loam.prior.motion_sigma=0.02"}, &without);
 	const std::vector<std::string> columns = without.columns();
 	EXPECT_EQ(std::count(columns.begin(), columns.end(), "lo_motion_prior"), 0);
+}
+
+TEST(AloamModule, GivesTheRegistrationsInformationOverTheVehiclesMotion)
+{
+	// The street runs along the LiDAR's x, the vehicle's y: scan-to-map knows the position least along
+	// it, and so does the information the module gives, in the vehicle's frame.
+	const Drive d = drive();
+	const auto [first, second, prior] = steps(d, d.vehicle_motion);
+	EXPECT_FALSE(first.information.has_value());  // nothing to register against
+	ASSERT_TRUE(second.information.has_value());
+	const Matrix6d cov = invertPositive(*second.information);
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov.topLeftCorner<3, 3>());
+	const Eigen::Vector3d weakest = es.eigenvectors().col(2);
+	std::printf("sigma x %.4f y %.4f z %.4f m, yaw %.4f deg, weakest (%.2f %.2f %.2f)\n", std::sqrt(cov(0, 0)),
+		std::sqrt(cov(1, 1)), std::sqrt(cov(2, 2)), std::sqrt(cov(5, 5)) * 180 / M_PI, weakest.x(), weakest.y(), weakest.z());
+	EXPECT_GT(std::abs(weakest.y()), 0.9);
+	// 100 effective points at the scan's 1 cm or more: millimetres to centimetres, never metres.
+	EXPECT_GT(std::sqrt(cov(1, 1)), 5e-4);
+	EXPECT_LT(std::sqrt(cov(1, 1)), 0.05);
+	EXPECT_LT(std::sqrt(cov(5, 5)) * 180 / M_PI, 0.5);
 }
 }  // namespace vlo::loam::test

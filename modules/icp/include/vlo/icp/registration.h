@@ -23,6 +23,9 @@ struct RegistrationResult
 	int iterations = 0;
 	std::size_t correspondences = 0;  ///< of the last iteration
 	double rms = 0;  ///< of the last iteration's paired distances [m]
+	/// Geman-McClure-weighted J^T J of the last iteration's pairs, over the left twist [translation;
+	/// rotation] of the pose (the pose's information up to the residuals' variance).
+	Eigen::Matrix<double, 6, 6> JtJ = Eigen::Matrix<double, 6, 6>::Zero();
 	bool converged = false;
 };
 

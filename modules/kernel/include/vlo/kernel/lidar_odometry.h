@@ -3,6 +3,7 @@
 // written into the frame table. Created by name ([pipeline] lidar_odometry) through
 // registry<LidarOdometryModule>().
 #include <vlo/core/frame.h>
+#include <vlo/core/pose_information.h>
 #include <vlo/kernel/frame_table.h>
 #include <vlo/kernel/motion_quality.h>
 #include <vlo/kernel/registry.h>
@@ -32,6 +33,22 @@ class LidarMount : public SensorMount
 	{
 		return vehicleTsensor() * lidar_pose * vehicleTsensor().inverse();
 	}
+	/// The information of the vehicle's motion from that of the LiDAR's motion `lidar_motion` (both
+	/// over vlo/core/pose_information.h's delta, each in its own frame).
+	Matrix6d vehicleInformation(const Matrix6d& lidar_information, const Eigen::Isometry3d& lidar_motion) const
+	{
+		return vehicleMotionInformation(lidar_information, vehicleTsensor(), vehiclePose(lidar_motion));
+	}
+};
+
+/// What a LiDAR odometry gives for a frame.
+struct LidarOdometryStep
+{
+	Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< vehicle, relative to the vehicle at the first frame
+	/// Of the vehicle's motion since the previous frame (previous^-1 * pose), over the pose graph's
+	/// [translation; rotation] (vlo/core/pose_information.h), from the frame's registration scaled
+	/// by registrationInformation(); nullopt where the module has none (a frame not registered).
+	std::optional<Matrix6d> information;
 };
 
 /// What a LiDAR odometry computed from a frame's scan alone, ahead of the frame's turn: each module
@@ -55,8 +72,8 @@ class LidarOdometryModule
 	/// `prepared` is what prepare() made of this frame, or nullptr (then the module does that work
 	/// itself). `vehicle_motion` is an external guess of the vehicle's motion since the previous
 	/// frame, in metres (pose of the current vehicle frame in the previous one), or nullopt: the
-	/// module then predicts on its own. Returns the vehicle pose relative to the vehicle at the first frame.
-	virtual Eigen::Isometry3d process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
+	/// module then predicts on its own.
+	virtual LidarOdometryStep process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
 		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) = 0;
 	/// What the motion source said of the next process()'s `vehicle_motion`; called just before it
 	/// when there is one. A module that weighs the guess may keep it (default: ignored).

@@ -40,6 +40,9 @@ class ScanToMap
 		/// With a pose prior: how much it raised the matches' cost (geometryCostOfPrior) [m^2]
 		double prior_geometry_cost = 0;
 		Degeneracy degeneracy;
+		/// Robust-weighted J^T J of the last round at the solution, over [rotation; translation] of
+		/// T_map_curr as Degeneracy's (the pose's information up to the residuals' variance).
+		Eigen::Matrix<double, 6, 6> JtJ = Eigen::Matrix<double, 6, 6>::Zero();
 		std::vector<Eigen::Vector3f> arrived;  ///< points in the previous scan's free space, not matched (map frame)
 	};
 

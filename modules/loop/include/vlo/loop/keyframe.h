@@ -2,6 +2,7 @@
 // Keyframes: the frames the loop closure keeps, one every few metres or degrees of the odometry, each
 // with its scan de-skewed, in the vehicle frame and thinned (what the descriptor and the registration use).
 #include <vlo/core/frame.h>
+#include <vlo/core/pose_information.h>
 
 #include <Eigen/Geometry>
 #include <vector>
@@ -17,6 +18,9 @@ struct Keyframe
 	Eigen::Isometry3d odometry = Eigen::Isometry3d::Identity();  ///< world_T_vehicle of the odometry
 	double path = 0;  ///< [m] the odometry's path from the first frame to this one
 	ScanPoints points;  ///< vehicle frame
+	/// Of the odometry's motion from the previous keyframe to this one (the pose graph's [translation;
+	/// rotation]): the frames' covariances composed (OdometryChain). Zero for the first keyframe.
+	Matrix6d odometry_covariance = Matrix6d::Zero();
 };
 
 /// Decides which frames become keyframes: the first, then each one that moved keyframe_distance or

@@ -6,11 +6,13 @@
 // odometry that calls addFrame never waits for them. Each keyframe is searched only among the
 // keyframes before it, from the odometry's poses, so the loops found do not depend on the timing.
 #include <vlo/core/frame.h>
+#include <vlo/core/pose_information.h>
 #include <vlo/core/trajectory.h>
 #include <vlo/loop/options.h>
 
 #include <Eigen/Geometry>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,11 +43,13 @@ class LoopClosure
 	LoopClosure(const LoopClosure&) = delete;
 	LoopClosure& operator=(const LoopClosure&) = delete;
 
-	/// Every frame of the odometry, in order: its pose (vehicle in the odometry's world) and its scan
-	/// (LiDAR frame, with point times when it has them). Returns quickly: a keyframe's scan is
-	/// copied and queued; the loop thread thins it and de-skews it with the odometry's motion.
-	void addFrame(long long frame, double t, const Eigen::Isometry3d& world_T_vehicle, const PointCloud& scan,
-		const Eigen::Isometry3d& vehicle_T_lidar);
+	/// Every frame of the odometry, in order: its pose (vehicle in the odometry's world), the
+	/// information of its motion since the previous frame (kernel::LidarOdometryStep's; nullopt: the
+	/// per-metre model) and its scan (LiDAR frame, with point times when it has them). Returns
+	/// quickly: the covariance is composed towards the next keyframe's odometry edge, a keyframe's
+	/// scan is copied and queued; the loop thread thins it and de-skews it with the odometry's motion.
+	void addFrame(long long frame, double t, const Eigen::Isometry3d& world_T_vehicle,
+		const std::optional<Matrix6d>& information, const PointCloud& scan, const Eigen::Isometry3d& vehicle_T_lidar);
 
 	/// Waits until the loop thread handled every keyframe, then optimises the whole graph once more.
 	void finish();

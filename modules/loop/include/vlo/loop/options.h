@@ -33,9 +33,13 @@ struct LoopOptions : public OptionSet
 	double max_drift_per_metre = 0.1;  ///< the loop's correction must be within this times the path between the visits ...
 	double max_drift_floor = 2.0;  ///< ... plus this [m], or it is rejected (repeated places)
 
-	// Pose graph.
-	double odometry_sigma_per_metre = 0.01;  ///< [m/m] translation noise of odometry edges
-	double odometry_sigma_deg_per_metre = 0.05;  ///< [deg/m] rotation noise of odometry edges
+	// Pose graph. Each frame's covariance is its registration's (the LiDAR odometry's information)
+	// plus a per-metre floor, as the registration's J^T J is over-confident (doc/LOOP.md); a frame
+	// without information gets the per-metre model alone.
+	double odometry_floor_per_metre = 0.002;  ///< [m/m] translation floor added to a registration's covariance
+	double odometry_floor_deg_per_metre = 0.01;  ///< [deg/m] rotation floor added to a registration's covariance
+	double odometry_sigma_per_metre = 0.01;  ///< [m/m] translation noise of a frame without information
+	double odometry_sigma_deg_per_metre = 0.05;  ///< [deg/m] rotation noise of a frame without information
 	double loop_huber = 1.0;  ///< robust loss of loop edges, in sigmas
 
    protected:

@@ -2,6 +2,7 @@
 // Point-to-plane ICP of a scan against a PlaneMap (Gauss-Newton, Geman-McClure weights), the fine
 // stage of a loop's verification, and the information of its result: what the loop edge weighs and
 // what tells a corridor (no constraint along it) from a place.
+#include <vlo/core/pose_information.h>
 #include <vlo/core/se3_twist.h>
 #include <vlo/loop/plane_map.h>
 
@@ -9,8 +10,6 @@
 
 namespace vlo::loop
 {
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
-
 struct PlaneFit
 {
 	Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< scan in the map

@@ -3,12 +3,13 @@
 // each node a position and a unit quaternion, each edge a measured relative pose a_T_b with its
 // information over the residual [translation of b in a; 2 x vector part of the rotation error], loop
 // edges under a Huber loss. The first node is held fixed.
+#include <vlo/core/pose_information.h>
+
 #include <Eigen/Geometry>
 #include <vector>
 
 namespace vlo::loop
 {
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
 class PoseGraph
 {
@@ -50,8 +51,4 @@ class PoseGraph
 	std::vector<Edge> edges_;
 };
 
-/// An odometry edge's information: sigma = per_metre x distance (at least floor_distance) in
-/// translation [m] and rotation [rad].
-Matrix6d odometryInformation(
-	double distance, double sigma_per_metre, double sigma_rad_per_metre, double floor_distance = 0.1);
 }  // namespace vlo::loop

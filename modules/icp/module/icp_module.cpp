@@ -25,10 +25,10 @@ class IcpModule : public kernel::LidarOdometryModule
 	}
 
 	kernel::LidarOdometryStep process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> /*prepared*/,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
+		const std::optional<kernel::MotionGuess>& guess, kernel::FrameTable& table) override
 	{
 		mount_.observe(frame);
-		const auto r = odometry_->process(frame.t, frame.scan, mount_.lidarMotion(vehicle_motion));
+		const auto r = odometry_->process(frame.t, frame.scan, mount_.lidarMotion(guess));  // its quality unused
 
 		table.set("lo_status", std::string(toString(r.status)));
 		table.set("lo_prior", r.prediction);

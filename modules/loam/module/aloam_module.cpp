@@ -50,13 +50,14 @@ class AloamModule : public kernel::LidarOdometryModule
 	}
 
 	kernel::LidarOdometryStep process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
+		const std::optional<kernel::MotionGuess>& guess, kernel::FrameTable& table) override
 	{
 		mount_.observe(frame);
 		ring_check_->observe(frame.scan);
-		const auto motion = mount_.lidarMotion(vehicle_motion);
+		const auto motion = mount_.lidarMotion(guess);
 		auto* ahead = dynamic_cast<PreparedLoamScan*>(prepared.get());
-		const loam::ExternalMotionQuality quality = std::exchange(quality_, {});
+		loam::ExternalMotionQuality quality;
+		if (guess) quality = {guess->quality.tracked, guess->quality.length_error};
 		const auto r = ahead ? lo_->process(frame.t, std::move(ahead->features), motion, quality)
 							 : lo_->process(frame.t, frame.scan, motion, quality);
 
@@ -91,8 +92,6 @@ class AloamModule : public kernel::LidarOdometryModule
 		return step;
 	}
 
-	void guessQuality(const kernel::MotionQuality& q) override { quality_ = {q.tracked, q.length_error}; }
-
    private:
 	/// Only where an external motion weighed in scan-to-map: a run without one (mode lo) has no such columns.
 	static void setMotionPriorColumns(const loam::LidarOdometryResult& r, kernel::FrameTable& table)
@@ -109,7 +108,6 @@ class AloamModule : public kernel::LidarOdometryModule
 	std::optional<loam::ScanFeatureExtractor> ahead_;
 	std::optional<loam::RingModelCheck> ring_check_;
 	kernel::LidarMount mount_;
-	loam::ExternalMotionQuality quality_;  ///< of the next frame's guess (guessQuality)
 };
 VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "aloam", AloamModule);
 }  // namespace

@@ -10,8 +10,6 @@
 #include <vlo/kernel/scale_correction.h>
 #include <vlo/kernel/visual_odometry.h>
 
-#include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -20,18 +18,12 @@ namespace vlo::pipeline
 {
 namespace
 {
-/// From the VO's and the scale corrector's columns of this frame's row (doc/VO.md, doc/SCALE.md):
-/// the features tracked, and the standard error of this frame's scale estimate.
-kernel::MotionQuality qualityFromColumns(const kernel::FrameTable& row)
+/// How far the motion can be trusted, from the VO's step and the scale corrector's estimate.
+kernel::MotionQuality quality(const kernel::VisualOdometryStep& step, const kernel::ScaleCorrection& correction)
 {
-	const auto last = [&row](const std::string& column) {
-		const std::vector<double> v = row.numbers(column);
-		return v.empty() ? std::numeric_limits<double>::quiet_NaN() : v.back();
-	};
 	kernel::MotionQuality q;
-	q.tracked = last("vo_matches");
-	const double s = last("scale_s"), spread = last("scale_spread"), inliers = last("scale_inliers");
-	if (s > 0 && spread > 0 && inliers >= 2) q.length_error = spread / s / std::sqrt(inliers);
+	if (step.tracked) q.tracked = *step.tracked;
+	q.length_error = correction.relative_error;
 	return q;
 }
 
@@ -52,7 +44,7 @@ class MetricMonoVo : public kernel::MotionSource
 		scale_->configure(config, setup.snapshot_every);
 	}
 
-	std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, kernel::FrameTable& table) override
+	std::optional<kernel::MotionGuess> process(std::shared_ptr<const Frame> frame, kernel::FrameTable& table) override
 	{
 		auto t0 = SteadyClock::now();
 		const kernel::VisualOdometryStep step = vo_->process(*frame, table);
@@ -64,11 +56,9 @@ class MetricMonoVo : public kernel::MotionSource
 		if (!path_) path_.emplace(frame->rig.vehicle_T_camera);
 		const auto motion = path_->update(frame->t, step, correction);
 		prev_ = std::move(frame);
-		quality_ = qualityFromColumns(table);
-		return motion;
+		if (!motion) return std::nullopt;
+		return kernel::MotionGuess{*motion, quality(step, correction)};
 	}
-
-	kernel::MotionQuality quality() const override { return quality_; }
 
 	Trajectory trajectory() const override { return path_ ? path_->trajectory() : Trajectory{}; }
 	std::string label() const override { return "scale-corrected VO"; }
@@ -80,7 +70,6 @@ class MetricMonoVo : public kernel::MotionSource
 	std::unique_ptr<kernel::ScaleCorrectionModule> scale_;
 	std::optional<MetricVoPath> path_;
 	std::shared_ptr<const Frame> prev_;  ///< the previous frame, shared with the run loop
-	kernel::MotionQuality quality_;  ///< of the last motion
 };
 VLO_REGISTER_MODULE(kernel::MotionSource, "metric_mono", MetricMonoVo);
 }  // namespace

@@ -18,7 +18,7 @@ class VisualSource : public kernel::MotionSource
 		vo_->useThreads(setup.threads);
 	}
 
-	std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, kernel::FrameTable& table) override
+	std::optional<kernel::MotionGuess> process(std::shared_ptr<const Frame> frame, kernel::FrameTable& table) override
 	{
 		auto t0 = SteadyClock::now();
 		const kernel::VisualOdometryStep step = vo_->process(*frame, table);
@@ -26,7 +26,7 @@ class VisualSource : public kernel::MotionSource
 		mount_.observe(*frame);
 		if (step.camera_pose) path_.push_back({frame->t, mount_.vehicle(*step.camera_pose, step.metric)});
 		if (!step.camera_motion) return std::nullopt;
-		return mount_.vehicle(*step.camera_motion, step.metric);
+		return kernel::MotionGuess{mount_.vehicle(*step.camera_motion, step.metric), {}};  // quality unknown
 	}
 
 	Trajectory trajectory() const override { return path_; }

@@ -16,8 +16,7 @@ namespace
 /// A frame between its motion source and its LiDAR odometry.
 struct FrameInFlight : ReadFrame
 {
-	std::optional<Eigen::Isometry3d> motion;  ///< of the vehicle since the previous frame
-	kernel::MotionQuality quality;  ///< of that motion
+	std::optional<kernel::MotionGuess> guess;  ///< the vehicle's motion since the previous frame
 	kernel::FrameTable motion_row;  ///< the motion source's columns
 	double ms = 0;  ///< spent in the motion source
 };
@@ -50,9 +49,8 @@ void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOpt
 		if (stages.lidar)
 		{
 			const auto t0 = SteadyClock::now();
-			if (plan.bootstrapping && done.motion) stages.lidar->guessQuality(done.quality);
 			kernel::LidarOdometryStep step = stages.lidar->process(
-				done.frame, std::move(done.prepared), plan.bootstrapping ? done.motion : std::nullopt, lidarRow);
+				done.frame, std::move(done.prepared), plan.bootstrapping ? done.guess : std::nullopt, lidarRow);
 			pose = step.pose;
 			information = step.information;
 			if (popt.map_every > 0 && done.frame.index % popt.map_every == 0)
@@ -74,7 +72,7 @@ void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOpt
 		table.setCells(done.motion_row);
 		if (pose)
 		{
-			if (stages.motion) table.set("vo_metric_motion", done.motion.has_value());
+			if (stages.motion) table.set("vo_metric_motion", done.guess.has_value());
 			table.set("lo_point_times", std::string(pointTimeSource(done.frame.scan)));
 			table.setCells(lidarRow);
 			outputs.lidar.push_back({done.frame.t, *pose});
@@ -110,8 +108,7 @@ void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOpt
 				const auto t0 = SteadyClock::now();
 				undistorter.apply(cur->frame);
 				// Shared with the motion source, which may keep it for the next frame.
-				cur->motion = stages.motion->process(std::shared_ptr<const Frame>(cur, &cur->frame), cur->motion_row);
-				cur->quality = stages.motion->quality();
+				cur->guess = stages.motion->process(std::shared_ptr<const Frame>(cur, &cur->frame), cur->motion_row);
 				cur->ms = msSince(t0);
 			}
 			catch (...)

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -34,7 +35,7 @@ constexpr double kStep = 0.5;  ///< [m] the vehicle's true motion per frame
 /// What the fakes saw, reset by each test.
 struct Seen
 {
-	std::vector<std::optional<Eigen::Isometry3d>> lidar_guesses;
+	std::vector<std::optional<kernel::MotionGuess>> lidar_guesses;
 	std::vector<long> scale_prev_index;  ///< index of the previous frame given to the corrector, -1 = none
 	std::vector<std::pair<double, bool>> rescales;  ///< (factor, whole_map) asked of the VO
 	int vo_frames = 0;
@@ -62,6 +63,7 @@ class FakeMonoVo : public MonocularVisualOdometry
 		if (frame.index == 0) return step;
 		const double units = units_per_step_;
 		step.new_map = frame.index == 1;
+		step.tracked = 40 + int(frame.index);
 		step.camera_map_pose = forward(units * double(frame.index - 1));
 		if (frame.index >= 2) step.camera_motion = forward(units);
 		step.camera_pose = forward(units * double(frame.index));  // not used by the metric VO
@@ -104,9 +106,10 @@ class FakeScale : public ScaleCorrectionModule
 	{
 		seen.scale_prev_index.push_back(prev ? long(prev->index) : -1);
 		table.set("scale_fake", vo.camera_motion.has_value());
-		if (cur.index == 2) return {kernel::ScaleCorrection::Kind::Initial, 0.5, "first"};
-		if (cur.index == 4) return {kernel::ScaleCorrection::Kind::Drift, 1.1, "drift"};
-		return {};
+		const double error = 0.01 * double(cur.index);  // the estimate's relative standard error
+		if (cur.index == 2) return {kernel::ScaleCorrection::Kind::Initial, 0.5, "first", error};
+		if (cur.index == 4) return {kernel::ScaleCorrection::Kind::Drift, 1.1, "drift", error};
+		return {kernel::ScaleCorrection::Kind::None, 1.0, "", error};
 	}
 	std::vector<std::pair<std::string, double>> figures() const override { return {{"fake_figure", 42}}; }
 };
@@ -118,9 +121,9 @@ class FakeLidar : public LidarOdometryModule
    public:
 	void configure(kernel::RunConfig&) override {}
 	kernel::LidarOdometryStep process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> /*prepared*/,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
+		const std::optional<kernel::MotionGuess>& guess, kernel::FrameTable& table) override
 	{
-		seen.lidar_guesses.push_back(vehicle_motion);
+		seen.lidar_guesses.push_back(guess);
 		table.set("lo_fake", static_cast<long long>(frame.scan.size()));
 		return {Eigen::Isometry3d(Eigen::Translation3d(kStep * double(frame.index), 0, 0)), std::nullopt};
 	}
@@ -132,10 +135,10 @@ class FailingLidar : public FakeLidar
 {
    public:
 	kernel::LidarOdometryStep process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
+		const std::optional<kernel::MotionGuess>& guess, kernel::FrameTable& table) override
 	{
 		if (frame.index == 3) failInput("lidar", "fails at frame 3");
-		return FakeLidar::process(frame, std::move(prepared), vehicle_motion, table);
+		return FakeLidar::process(frame, std::move(prepared), guess, table);
 	}
 };
 VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "failing_lidar", FailingLidar);
@@ -145,10 +148,10 @@ class InterruptedLidar : public FakeLidar
 {
    public:
 	kernel::LidarOdometryStep process(const Frame& frame, std::unique_ptr<kernel::PreparedScan> prepared,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, kernel::FrameTable& table) override
+		const std::optional<kernel::MotionGuess>& guess, kernel::FrameTable& table) override
 	{
 		if (frame.index == 3) std::raise(SIGINT);
-		return FakeLidar::process(frame, std::move(prepared), vehicle_motion, table);
+		return FakeLidar::process(frame, std::move(prepared), guess, table);
 	}
 };
 VLO_REGISTER_MODULE(kernel::LidarOdometryModule, "interrupted_lidar", InterruptedLidar);
@@ -259,8 +262,11 @@ TEST_F(RunLoop, MetricMonoVoGivesTheLidarOdometryTheScaledMotionInVehicleAxes)
 	for (int i = 2; i < kFrames; ++i)
 	{
 		ASSERT_TRUE(seen.lidar_guesses[i]) << i;
-		EXPECT_NEAR(seen.lidar_guesses[i]->translation().x(), expected[i], 1e-12) << i;
-		EXPECT_NEAR(seen.lidar_guesses[i]->translation().norm(), expected[i], 1e-12) << i;
+		EXPECT_NEAR(seen.lidar_guesses[i]->motion.translation().x(), expected[i], 1e-12) << i;
+		EXPECT_NEAR(seen.lidar_guesses[i]->motion.translation().norm(), expected[i], 1e-12) << i;
+		// Its quality: the VO's tracked features and the scale estimate's error of the same frame.
+		EXPECT_EQ(seen.lidar_guesses[i]->quality.tracked, 40 + i) << i;
+		EXPECT_DOUBLE_EQ(seen.lidar_guesses[i]->quality.length_error, 0.01 * i) << i;
 	}
 	EXPECT_EQ(column(out("frames.csv"), "vo_metric_motion"), (std::vector<std::string>{"0", "0", "1", "1", "1", "1"}));
 	EXPECT_EQ(column(out("frames.csv"), "x"), (std::vector<std::string>{"0.000", "0.500", "1.000", "1.500", "2.000", "2.500"}));
@@ -365,7 +371,8 @@ TEST_F(RunLoop, AMetricVoNeedsNoScaleCorrection)
 	for (int i = 1; i < kFrames; ++i)
 	{
 		ASSERT_TRUE(seen.lidar_guesses[i]);
-		EXPECT_DOUBLE_EQ(seen.lidar_guesses[i]->translation().x(), kStep);
+		EXPECT_DOUBLE_EQ(seen.lidar_guesses[i]->motion.translation().x(), kStep);
+		EXPECT_TRUE(std::isnan(seen.lidar_guesses[i]->quality.length_error));  // no scale estimate
 	}
 	EXPECT_TRUE(seen.scale_prev_index.empty());
 }
@@ -392,7 +399,7 @@ TEST_F(RunLoop, OneAndTwoThreadsGiveTheSameOutputs)
 		run({"pipeline.mode=vlo", std::string("pipeline.threads=") + threads});
 		EXPECT_EQ(seen.scale_prev_index, (std::vector<long>{-1, 0, 1, 2, 3, 4})) << threads;
 		ASSERT_EQ(seen.lidar_guesses.size(), std::size_t(kFrames));
-		EXPECT_NEAR(seen.lidar_guesses[4]->translation().x(), 0.55, 1e-12) << threads;
+		EXPECT_NEAR(seen.lidar_guesses[4]->motion.translation().x(), 0.55, 1e-12) << threads;
 		std::string text;
 		const auto names = header(out("frames.csv"));
 		for (const auto& name : names)

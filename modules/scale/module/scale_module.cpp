@@ -26,6 +26,15 @@ struct ScaleSnapshot
 	scale::ScaleEstimate estimate;
 };
 
+/// Relative standard error of the estimate's scale, spread / s / sqrt(inliers), for a motion source
+/// to weigh the motion by (NaN without a finite estimate of two inliers or more).
+double relativeError(const scale::ScaleEstimate& e)
+{
+	if (!std::isfinite(e.scale) || !std::isfinite(e.spread) || e.scale <= 0 || e.spread <= 0 || e.counts.inliers < 2)
+		return std::nan("");
+	return e.spread / e.scale / std::sqrt(double(e.counts.inliers));
+}
+
 class LidarDepthScaleModule : public kernel::ScaleCorrectionModule
 {
    public:
@@ -60,6 +69,7 @@ class LidarDepthScaleModule : public kernel::ScaleCorrectionModule
 		valid_ += e.valid ? 1 : 0;
 		const scale::ScaleDecision d = policy_->decide(e);
 		correction.why = scale::toString(d.kind);
+		correction.relative_error = relativeError(e);
 		if (d.apply())
 		{
 			// With a camera motion the VO tracked this frame in its map: the caller applies the factor.

@@ -45,6 +45,7 @@ class OrbVoModule : public kernel::MonocularVisualOdometry
 		step.camera_map_pose = info.map_pose;
 		step.new_map = info.new_map;
 		step.metric = info.metric;
+		step.tracked = info.matches;
 		return step;
 	}
 

@@ -65,8 +65,9 @@ std::tuple<kernel::LidarOdometryStep, kernel::LidarOdometryStep, std::string> st
 	table.newRow();
 	kernel::LidarOdometryStep first = lo->process(d.a, nullptr, std::nullopt, table);
 	table.newRow();
-	if (guess) lo->guessQuality({50, std::nan("")});
-	kernel::LidarOdometryStep second = lo->process(d.b, nullptr, guess, table);
+	std::optional<kernel::MotionGuess> g;
+	if (guess) g = kernel::MotionGuess{*guess, {50, std::nan("")}};
+	kernel::LidarOdometryStep second = lo->process(d.b, nullptr, g, table);
 	if (out) *out = table;
 	return {first, second, table.cell(1, "lo_prior")};
 }

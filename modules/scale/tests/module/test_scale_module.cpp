@@ -6,6 +6,8 @@
 
 #include "../synthetic_scene.h"
 
+#include <cmath>
+
 using namespace vlo;
 using namespace vlo::scale::test;
 
@@ -53,6 +55,12 @@ TEST(ScaleModule, TheFirstEstimateDecidesToScaleTheWholeMap)
 	EXPECT_EQ(a.why, "initial");
 	EXPECT_EQ(f.last("scale_decision"), "initial");
 	EXPECT_NEAR(std::stod(f.last("scale_applied")), 2.0, 0.02);
+	// The estimate's relative standard error, for the motion's quality: spread / s / sqrt(inliers).
+	const auto number = [&f](const std::string& column) { return f.table.numbers(column).back(); };
+	ASSERT_GE(number("scale_inliers"), 2);
+	EXPECT_DOUBLE_EQ(a.relative_error, number("scale_spread") / number("scale_s") / std::sqrt(number("scale_inliers")));
+	EXPECT_GT(a.relative_error, 0);
+	EXPECT_LT(a.relative_error, 0.01);
 	ASSERT_EQ(f.module->figures().size(), 3u);
 	EXPECT_EQ(f.module->figures()[2], std::make_pair(std::string("scale_corrections"), 0.0));  // initial only
 }
@@ -79,5 +87,6 @@ TEST(ScaleModule, NothingWithoutAPreviousFrameOrAMotion)
 	const kernel::ScaleCorrection none = f.step(&f.prev);
 	EXPECT_FALSE(none.apply());
 	EXPECT_EQ(none.why, "no VO motion");
+	EXPECT_TRUE(std::isnan(none.relative_error));  // no estimate
 	EXPECT_EQ(f.last("scale_decision"), "no VO motion");
 }

@@ -5,7 +5,7 @@
 #include <vlo/core/frame.h>
 #include <vlo/core/pose_information.h>
 #include <vlo/kernel/frame_table.h>
-#include <vlo/kernel/motion_quality.h>
+#include <vlo/kernel/motion_guess.h>
 #include <vlo/kernel/registry.h>
 #include <vlo/kernel/run_config.h>
 #include <vlo/kernel/sensor_mount.h>
@@ -22,11 +22,11 @@ class LidarMount : public SensorMount
 {
    public:
 	LidarMount() : SensorMount(&SensorRig::vehicle_T_lidar) {}
-	/// A motion of the vehicle seen from the LiDAR: L = Tvl^-1 * V * Tvl.
-	std::optional<Eigen::Isometry3d> lidarMotion(const std::optional<Eigen::Isometry3d>& vehicle_motion) const
+	/// A guessed motion of the vehicle seen from the LiDAR: L = Tvl^-1 * V * Tvl.
+	std::optional<Eigen::Isometry3d> lidarMotion(const std::optional<MotionGuess>& guess) const
 	{
-		if (!vehicle_motion) return std::nullopt;
-		return vehicleTsensor().inverse() * *vehicle_motion * vehicleTsensor();
+		if (!guess) return std::nullopt;
+		return vehicleTsensor().inverse() * guess->motion * vehicleTsensor();
 	}
 	/// The vehicle's pose relative to its first frame from the LiDAR's relative to its first frame.
 	Eigen::Isometry3d vehiclePose(const Eigen::Isometry3d& lidar_pose) const
@@ -70,13 +70,10 @@ class LidarOdometryModule
 	/// whichever thread runs it. Default: nothing ahead (nullptr).
 	virtual std::unique_ptr<PreparedScan> prepare(const Frame& /*frame*/) { return nullptr; }
 	/// `prepared` is what prepare() made of this frame, or nullptr (then the module does that work
-	/// itself). `vehicle_motion` is an external guess of the vehicle's motion since the previous
-	/// frame, in metres (pose of the current vehicle frame in the previous one), or nullopt: the
-	/// module then predicts on its own.
+	/// itself). `guess` is an external guess of the vehicle's motion since the previous frame and
+	/// its quality (a module may weigh the motion by it), or nullopt: the module then predicts on
+	/// its own.
 	virtual LidarOdometryStep process(const Frame& frame, std::unique_ptr<PreparedScan> prepared,
-		const std::optional<Eigen::Isometry3d>& vehicle_motion, FrameTable& table) = 0;
-	/// What the motion source said of the next process()'s `vehicle_motion`; called just before it
-	/// when there is one. A module that weighs the guess may keep it (default: ignored).
-	virtual void guessQuality(const MotionQuality& /*quality*/) {}
+		const std::optional<MotionGuess>& guess, FrameTable& table) = 0;
 };
 }  // namespace vlo::kernel

@@ -7,10 +7,10 @@ namespace vlo::kernel
 {
 struct MotionQuality
 {
-	/// Image features the visual odometry tracked in its map for this motion (frames.csv vo_matches).
+	/// Image features the visual odometry tracked in its map for this motion (VisualOdometryStep::tracked).
 	double tracked = std::numeric_limits<double>::quiet_NaN();
-	/// Relative standard error of the motion's length, e.g. a scale corrector's spread of its
-	/// estimates over the square root of their count (frames.csv scale_spread, scale_inliers).
+	/// Relative standard error of the motion's length, e.g. a scale corrector's of its estimate
+	/// (ScaleCorrection::relative_error).
 	double length_error = std::numeric_limits<double>::quiet_NaN();
 };
 }  // namespace vlo::kernel

@@ -5,7 +5,7 @@
 #include <vlo/core/frame.h>
 #include <vlo/core/trajectory.h>
 #include <vlo/kernel/frame_table.h>
-#include <vlo/kernel/motion_quality.h>
+#include <vlo/kernel/motion_guess.h>
 #include <vlo/kernel/registry.h>
 #include <vlo/kernel/run_config.h>
 
@@ -34,11 +34,9 @@ class MotionSource
 	/// Creates and configures the composed modules.
 	virtual void configure(RunConfig& config, const MotionSourceSetup& setup) = 0;
 	/// The vehicle's motion since the previous frame (pose of the current vehicle frame in the
-	/// previous one), when known; writes its diagnostics columns. The frame is shared, never changed
-	/// again, so that a source may keep it for the next frame without a copy.
-	virtual std::optional<Eigen::Isometry3d> process(std::shared_ptr<const Frame> frame, FrameTable& table) = 0;
-	/// How far the last process()'s motion can be trusted (default: unknown).
-	virtual MotionQuality quality() const { return {}; }
+	/// previous one) and its quality, when known; writes its diagnostics columns. The frame is shared,
+	/// never changed again, so that a source may keep it for the next frame without a copy.
+	virtual std::optional<MotionGuess> process(std::shared_ptr<const Frame> frame, FrameTable& table) = 0;
 	/// Vehicle poses relative to the vehicle at the start, as written to trajectory_vo.tum.
 	virtual Trajectory trajectory() const = 0;
 	/// Name of that trajectory in plots.

@@ -9,6 +9,7 @@
 #include <vlo/kernel/run_config.h>
 #include <vlo/kernel/visual_odometry.h>
 
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +28,9 @@ struct ScaleCorrection
 	Kind kind = Kind::None;
 	double factor = 1.0;  ///< lengths measured before the correction times this are metric
 	std::string why;  ///< what decided it
+	/// Relative standard error of this frame's scale estimate: the spread of its inliers' scales over
+	/// the scale and the square root of their count; NaN without an estimate of two inliers or more.
+	double relative_error = std::numeric_limits<double>::quiet_NaN();
 
 	bool apply() const { return kind != Kind::None; }
 };

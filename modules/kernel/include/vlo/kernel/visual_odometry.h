@@ -25,6 +25,7 @@ struct VisualOdometryStep
 	std::optional<Eigen::Isometry3d> camera_map_pose;
 	bool new_map = false;  ///< a map (of arbitrary scale for a monocular VO) was initialised at this frame
 	bool metric = false;  ///< the units are metres (a monocular VO's: once its map was scaled)
+	std::optional<int> tracked;  ///< image features tracked in the map at this frame, when the VO counts them
 };
 
 /// Where the camera sits on the vehicle, taken from the first frame: turns the VO's camera poses and

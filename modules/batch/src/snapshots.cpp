@@ -3,6 +3,7 @@
 #include <vlo/core/log.h>
 #include <vlo/viz/topdown.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -10,20 +11,16 @@ namespace vlo::batch
 {
 namespace
 {
+bool samePoses(const Trajectory& a, const Trajectory& b)
+{
+	return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const StampedPose& x, const StampedPose& y) {
+		return x.t == y.t && x.pose.matrix() == y.pose.matrix();
+	});
+}
+
 bool drawSequence(const Sequence& s, const std::vector<RunResult>& results, const std::string& png)
 {
-	std::vector<viz::NamedTrajectory> trajs;
-	for (const auto& r : results)
-	{
-		if (r.sequence != s.name) continue;
-		for (const auto& t : r.trajectories)
-		{
-			// An unscaled monocular estimate means nothing next to metric ones before its Sim(3) alignment.
-			const bool useAligned = !t.aligned.empty();
-			const std::string file = useAligned ? t.aligned : r.dir + "/" + files::trajectory(t.name);
-			trajs.push_back({r.config + " / " + t.name + (useAligned ? " (Sim(3) aligned)" : ""), io::readTum(file), std::nullopt});
-		}
-	}
+	const std::vector<viz::NamedTrajectory> trajs = sequenceTrajectories(s, results);
 	if (trajs.empty()) return false;
 	Trajectory gt;
 	if (std::filesystem::is_regular_file(s.gt)) gt = io::readTum(s.gt);
@@ -33,6 +30,27 @@ bool drawSequence(const Sequence& s, const std::vector<RunResult>& results, cons
 	return true;
 }
 }  // namespace
+
+std::vector<viz::NamedTrajectory> sequenceTrajectories(const Sequence& s, const std::vector<RunResult>& results)
+{
+	std::vector<viz::NamedTrajectory> trajs;
+	for (const auto& r : results)
+	{
+		if (r.sequence != s.name) continue;
+		const std::size_t first = trajs.size();  // this run's
+		for (const auto& t : r.trajectories)
+		{
+			// An unscaled monocular estimate means nothing next to metric ones before its Sim(3) alignment.
+			const bool useAligned = !t.aligned.empty();
+			const std::string file = useAligned ? t.aligned : r.dir + "/" + files::trajectory(t.name);
+			Trajectory traj = io::readTum(file);
+			const auto same = [&traj](const viz::NamedTrajectory& o) { return samePoses(o.traj, traj); };
+			if (std::any_of(trajs.begin() + static_cast<std::ptrdiff_t>(first), trajs.end(), same)) continue;
+			trajs.push_back({r.config + " / " + t.name + (useAligned ? " (Sim(3) aligned)" : ""), std::move(traj), std::nullopt});
+		}
+	}
+	return trajs;
+}
 
 std::vector<std::string> writeSnapshots(const Plan& plan, const std::vector<RunResult>& results, const std::string& out)
 {

@@ -191,6 +191,22 @@ TEST_F(BatchTables, SnapshotPerSequenceWithTrajectories)
 	for (const auto& p : pngs) EXPECT_GT(fs::file_size(out + "/" + p), 1000u);
 }
 
+TEST_F(BatchTables, SnapshotLeavesOutARunsCopyOfItsOwnTrajectory)
+{
+	// s1's lo run closed no loop: its trajectory_slam.tum is its trajectory_lo.tum; s2's closed one.
+	test::writeFile(runDir(out, "s1", "lo") + "/trajectory_slam.tum", kTum);
+	test::writeFile(runDir(out, "s2", "lo") + "/trajectory_slam.tum", "0 0 0 0 0 0 0 1\n0.1 1 0 0 0 0 0 1\n0.2 2 0 0 0 0 0 1\n");
+	const auto rs = collectResults(plan, out);
+	const auto names = [&rs](const Sequence& s) {
+		std::vector<std::string> n;
+		for (const auto& t : sequenceTrajectories(s, rs)) n.push_back(t.name);
+		return n;
+	};
+	// s1's vo_mono trajectory equals its lo one too, but it is another run's: drawn.
+	EXPECT_EQ(names(plan.sequences[0]), (std::vector<std::string>{"lo / lo", "vo_mono / vo (Sim(3) aligned)"}));
+	EXPECT_EQ(names(plan.sequences[1]), (std::vector<std::string>{"lo / lo", "lo / slam", "vo_mono / vo"}));
+}
+
 TEST(BatchJson, ScalarsStringsAndNulls)
 {
 	const auto j = JsonFields::parse("{\"a\": 1.5e2, \"b\": null, \"s\": \"x \\\"y\\\"\\n\", \"arr\": [1, {\"c\": \"]\"}], \"o\": {}, "

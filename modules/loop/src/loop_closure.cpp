@@ -1,3 +1,4 @@
+#include <vlo/core/units.h>
 #include <vlo/loop/keyframe.h>
 #include <vlo/loop/loop_closure.h>
 #include <vlo/loop/loop_worker.h>
@@ -61,7 +62,7 @@ Eigen::Isometry3d blend(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, 
 struct LoopClosure::Impl
 {
 	explicit Impl(const LoopOptions& o)
-		: options(o), selector(o.keyframe_distance, o.keyframe_angle_deg * M_PI / 180), chain(o), worker(o)
+		: options(o), selector(o.keyframe_distance, o.keyframe_angle_deg * kRadPerDeg), chain(o), worker(o)
 	{
 	}
 

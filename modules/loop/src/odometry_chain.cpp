@@ -1,4 +1,5 @@
 #include <vlo/loop/odometry_chain.h>
+#include <vlo/core/units.h>
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +8,9 @@ namespace vlo::loop
 {
 OdometryChain::OdometryChain(const LoopOptions& options)
 	: floor_per_metre_(options.odometry_floor_per_metre),
-	  floor_rad_per_metre_(options.odometry_floor_deg_per_metre * M_PI / 180),
+	  floor_rad_per_metre_(options.odometry_floor_deg_per_metre * kRadPerDeg),
 	  sigma_per_metre_(options.odometry_sigma_per_metre),
-	  sigma_rad_per_metre_(options.odometry_sigma_deg_per_metre * M_PI / 180)
+	  sigma_rad_per_metre_(options.odometry_sigma_deg_per_metre * kRadPerDeg)
 {
 }
 

@@ -99,6 +99,13 @@ AteResult computeAte(const Trajectory& gt, const Trajectory& est, Alignment alig
 	r.ate_rmse_m = std::sqrt(sq_t / n);
 	r.ate_mean_m = sum_t / n;
 	if (!gt_has_rotation) return r;
+	Eigen::Vector3d axes2 = Eigen::Vector3d::Zero();
+	for (std::size_t i = 0; i < est.size(); ++i)
+	{
+		const Eigen::Vector3d e = r.alignment * Eigen::Vector3d(est[i].pose.translation()) - gt[i].pose.translation();
+		axes2 += (gt[i].pose.linear().transpose() * e).cwiseAbs2();
+	}
+	r.ate_rmse_axes_m = (axes2 / n).cwiseSqrt();
 
 	// Unaligned, the estimate's rotation is as given: nothing to choose.
 	const Eigen::Matrix3d R = align == Alignment::None ? r.alignment.R : rotationForAre(gt, est, r.alignment.R, r.ate_rmse_m, r);

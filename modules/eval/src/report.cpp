@@ -65,10 +65,11 @@ std::string toJson(const EvalReport& r)
 {
 	const auto& a = r.association;
 	const auto k = kittiNumbers(r);
-	std::optional<double> ate, ate_mean, ate_max, ate_pct, are, are_roll, scale;
+	std::optional<double> ate, ate_mean, ate_max, ate_pct, are, are_roll, scale, ax, ay, az;
 	if (r.ate)
 	{
 		ate = r.ate->ate_rmse_m, ate_mean = r.ate->ate_mean_m, ate_max = r.ate->ate_max_m;
+		if (const auto& axes = r.ate->ate_rmse_axes_m) ax = axes->x(), ay = axes->y(), az = axes->z();
 		are = r.ate->are_rmse_deg, are_roll = r.ate->are_roll_from_orientations_deg, scale = r.ate->sim3_scale;
 		if (r.gt_length_m > 0) ate_pct = 100 * r.ate->ate_rmse_m / r.gt_length_m;
 	}
@@ -91,7 +92,7 @@ std::string toJson(const EvalReport& r)
 		{"n_dropped_gt_gap", a.n_in_gap}, {"max_dt_s", num(a.max_gap_used_s)},
 		{"gt_translation_only", r.options.gt_translation_only}, {"gt_length_m", num(r.gt_length_m)},
 		{"est_length_m", num(r.est_length_m)}, {"ate_rmse_m", num(ate)}, {"ate_mean_m", num(ate_mean)},
-		{"ate_max_m", num(ate_max)}, {"ate_pct_of_length", num(ate_pct)}, {"are_rmse_deg", num(are)},
+		{"ate_max_m", num(ate_max)}, {"ate_rmse_axes_m", {num(ax), num(ay), num(az)}}, {"ate_pct_of_length", num(ate_pct)}, {"are_rmse_deg", num(are)},
 		{"are_roll_from_orientations_deg", num(are_roll)}, {"sim3_scale", num(scale)}, {"ate_note", noteOrNull(r.ate_note)}, {"are_note", noteOrNull(r.are_note)},
 		{"kitti_frame", r.kitti_frame}, {"kitti_t_err_pct", num(k.t_pct)}, {"kitti_r_err_deg_per_m", num(k.r_deg_m)},
 		{"kitti_r_err_deg_per_100m", num(k.r_deg_100m)},
@@ -134,6 +135,8 @@ std::string formatTable(const EvalReport& r)
 	{
 		const std::string of_length = r.gt_length_m > 0 ? fmt("  (%.3f %% of length)", 100 * r.ate->ate_rmse_m / r.gt_length_m) : "";
 		row("ATE RMSE " + al, fmt("%.4f m", r.ate->ate_rmse_m) + of_length);
+		if (const auto& e = r.ate->ate_rmse_axes_m)
+			row("ATE RMSE per truth axis", fmt("x %.4f", e->x()) + fmt(", y %.4f", e->y()) + fmt(", z %.4f m", e->z()));
 		const auto& roll = r.ate->are_roll_from_orientations_deg;
 		const std::string roll_note = roll ? "  (roll about the path from the orientations)" : "";
 		row("ARE RMSE " + al, r.ate->are_rmse_deg ? fmt("%.4f deg", *r.ate->are_rmse_deg) + roll_note : "n/a: " + r.are_note);

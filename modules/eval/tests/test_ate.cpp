@@ -84,6 +84,23 @@ TEST(Ate, KnownConstantPositionErrorGivesThatRmse)
 	EXPECT_NEAR(computeAte(gt, est, Alignment::SE3).ate_rmse_m, 0, 1e-9);
 }
 
+TEST(Ate, ErrorPerAxisIsInTheTruthsOwnFrameAtEachPose)
+{
+	// Unaligned, an error of (0.1 ahead, 0.2 left, 0.3 up) in each pose's own frame, whichever way the truth
+	// faces (wiggly turns, rolls and pitches), is exactly that per axis.
+	const Trajectory gt = wiggly(100);
+	Trajectory est = gt;
+	const Eigen::Vector3d body(0.1, -0.2, 0.3);
+	for (auto& p : est) p.pose.translation() += p.pose.linear() * body;
+	const AteResult r = computeAte(gt, est, Alignment::None);
+	ASSERT_TRUE(r.ate_rmse_axes_m.has_value());
+	EXPECT_NEAR(r.ate_rmse_axes_m->x(), 0.1, 1e-12);
+	EXPECT_NEAR(r.ate_rmse_axes_m->y(), 0.2, 1e-12);
+	EXPECT_NEAR(r.ate_rmse_axes_m->z(), 0.3, 1e-12);
+	EXPECT_NEAR(r.ate_rmse_m, body.norm(), 1e-12);
+	EXPECT_FALSE(computeAte(gt, est, Alignment::None, false).ate_rmse_axes_m.has_value());
+}
+
 TEST(Ate, TranslationOnlyGroundTruthHasNoAre)
 {
 	const Trajectory est = wiggly(100);

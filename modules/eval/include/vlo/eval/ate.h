@@ -24,6 +24,10 @@ struct AteResult
 {
 	Sim3 alignment;  ///< applied to the estimate: aligned_i = alignment * est_i
 	double ate_rmse_m = 0, ate_mean_m = 0, ate_max_m = 0;
+	/// The aligned estimate's position error RMS along each axis of the ground truth's own frame at each
+	/// pose (a vehicle frame: along the way, across it, up), so that an error the truth itself makes in one
+	/// direction (e.g. a GNSS track's lateral wander) is told apart; empty for translation-only truth.
+	std::optional<Eigen::Vector3d> ate_rmse_axes_m;
 	std::optional<double> are_rmse_deg;  ///< empty when the ground truth has no rotations
 	/// Set when the path is nearly straight and too straight for the positions to fix the alignment's rotation
 	/// about the direction of travel (uncertain by more than 1 deg): the ARE then takes that rotation from the

@@ -67,6 +67,18 @@ bool lineLike(const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& es, double r
 {
 	return es.eigenvalues()(2) > ratio * es.eigenvalues()(1);
 }
+
+// A line's points are thin across it in every direction. Points strewn over a surface (edge points
+// that a wall's range noise or a road's texture made, the nearest few of which pass A-LOAM's test by
+// chance) spread across the "line" within the surface, far more than out of it: such a line says
+// nothing about where along the surface the scan lies, yet its matches weigh as if it did (along a
+// corridor's smooth walls they outweighed the VO's motion). Spreads below a sensor's noise count as
+// that noise, so that exact points on a line stay a line.
+bool flatAcross(const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& es, double ratio)
+{
+	constexpr double kNoiseFloorSq = 0.01 * 0.01;  // [m^2] 1 cm
+	return ratio > 0 && es.eigenvalues()(1) > ratio * std::max(es.eigenvalues()(0), kNoiseFloorSq);
+}
 }  // namespace
 
 // A plane through the k nearest map points, if they spread in two dimensions and all lie close
@@ -159,7 +171,7 @@ void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Mat
 		if (edge_map_.knn(R * p + t, k, static_cast<float>(opt_.max_nn_distance), nn, tags) < k) continue;
 		if (seenFromOtherRange(p, nn, tags, k)) continue;
 		fit(nn, k, c, es);
-		if (!lineLike(es, opt_.edge_eigen_ratio)) continue;
+		if (!lineLike(es, opt_.edge_eigen_ratio) || flatAcross(es, opt_.edge_flatness_ratio)) continue;
 		const Eigen::Vector3d u = es.eigenvectors().col(2);
 		if (seenFromTooFar(u, e < in.edge_silhouette.size() && in.edge_silhouette[e], tags, k, T)) continue;
 		out.edges.push_back(EdgeMatch{p.cast<double>(), c, u});

@@ -125,6 +125,43 @@ TEST(Map, LinesAreMatchedOnlyToPointsSeenFromASimilarRange)
 	EXPECT_EQ(matches(-2, 0), 1u);  // off: any range (A-LOAM)
 }
 
+TEST(Map, PointsStrewnOverASurfaceAreNoLine)
+{
+	// Edge map points of a pole 5 m ahead on the right (1 cm of noise across it) and of a band on a
+	// wall 3 m to the left: along the band 2.5 m, across it within the wall +-8 cm, out of the wall
+	// +-5 mm. Both pass A-LOAM's test (largest spread > 3x the middle); the wall's points spread across
+	// their "line" within a surface.
+	FeatureSet f;
+	const auto add = [&](float x, float y, float z) {
+		ScanPoint q;
+		q.p = Eigen::Vector3f(x, y, z);
+		f.less_sharp.push_back(q);
+		f.less_sharp_silhouette.push_back(0);
+	};
+	for (int i = 0; i < 12; ++i)
+	{
+		const float s = i % 2 == 0 ? 1.0f : -1.0f, s3 = i % 3 == 0 ? 1.0f : -1.0f;
+		add(5.0f + 0.01f * s, -3.0f + 0.01f * s3, -1.2f + 0.21f * i);
+		add(4.0f + 0.21f * i, 3.0f + 0.005f * s, -0.5f + 0.08f * i + 0.08f * s);
+	}
+	ScanToMap::Input probes;
+	probes.edges = {Eigen::Vector3f(5.0f, -3.0f, 0.1f), Eigen::Vector3f(5.05f, 3.0f, -0.1f)};
+	probes.edge_silhouette = {0, 0};
+	const auto matches = [&](double flatness) {
+		MappingOptions o;
+		o.edge_flatness_ratio = flatness;
+		o.view_dependent_reach = 0;
+		ScanToMap mapper(o);
+		mapper.insert(f, Eigen::Isometry3d::Identity());
+		Matches m;
+		mapper.findMatches(probes, Eigen::Isometry3d::Identity(), true, m);
+		return m.edges.size();
+	};
+	EXPECT_EQ(matches(0), 2u);  // A-LOAM: the wall's band is a line too
+	EXPECT_EQ(matches(5), 1u);  // only the pole
+	EXPECT_EQ(matches(MappingOptions().edge_flatness_ratio), 1u);  // the default
+}
+
 TEST(Map, ScanToMapStaysBoundedOverFiveKilometres)
 {
 	// A scan-like point set (ground and two walls within 60 m) inserted every 5 m along a 5 km

@@ -124,6 +124,9 @@ struct MappingOptions : public OptionSet
 	int knn = 8;  ///< A-LOAM: 5; 8 lets fewer false lines through (doc/LOAM.md step 4)
 	double max_nn_distance = 1.0;  ///< all knn neighbours must be this close [m]
 	double edge_eigen_ratio = 3.0;  ///< line if largest eigenvalue > ratio * middle one
+	/// no line where its points spread across it within a surface: middle eigenvalue > ratio * smallest
+	/// (floored at 1 cm squared); 0: off, as A-LOAM
+	double edge_flatness_ratio = 5.0;
 	/// Lines that depend on the view are matched only against map points seen from nearby
 	/// (doc/LOAM.md "Known limits"): a ring (a cone about the spin axis) meets a line at most as
 	/// steeply as the line rises out of the plane normal to that axis, so where it meets a flat line

@@ -2,7 +2,7 @@
 # The VO through vlo-sim's avenue (doc/VO.md "Fast foliage"): close foliage at 11-13 m/s with the realistic
 # camera. With weak frames (the default) it is never lost and its Sim(3) ATE stays small; with them off
 # (ORB-SLAM2's rule, LOST below 30 inliers) the same drive loses track and most of its frames.
-# The loss hangs on one frame of 29 inliers: of 67 drives tried (seeds 1-6 at 50-100 frames, with a VLP-16
+# The loss hangs on one frame of 29 inliers (so the test's threshold is 34, below): of 67 drives tried (seeds 1-6 at 50-100 frames, with a VLP-16
 # at 40-100, in sun and shade at 100) only seed 1, overcast, at 100 frames has it. A shorter drive is another
 # road and world; the VO reads the camera only, but a VLP-16 drive's images differ in a few grey levels.
 set -u
@@ -33,8 +33,11 @@ count() {
 	esac
 }
 
-run weak
-run strict --set vo.tracking.min_weak_inliers=0
+# Both runs take a frame as LOST below 34 inliers, not 30: the drive's weakest frame (26) has 29, and 34
+# leaves it 5 inliers of margin either way (a grey level elsewhere must not decide the test). With the
+# default 30 both runs give the same poses and counts as here (measured).
+run weak --set vo.tracking.min_local_inliers=34
+run strict --set vo.tracking.min_local_inliers=34 --set vo.tracking.min_weak_inliers=0
 for r in weak strict; do
 	echo "$r: $(count $r lost) losses, $(count $r tracked) / $FRAMES tracked, $(count $r weak) weak, Sim(3) ATE $(jv $r.json ate_rmse_m) m"
 done

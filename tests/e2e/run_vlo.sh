@@ -61,7 +61,7 @@ sys.exit(0 if ok else "header: " + ",".join(h))' || fail "frames.csv column orde
 
 # Rows whose vo_reason holds a comma keep their later columns: every lo_prior is one of LOAM's sources.
 grep -q '"initialised (.*,' vlo/frames.csv || fail "no quoted vo_reason with a comma in frames.csv"
-[ "$(column vlo/frames.csv lo_prior | grep -cvxE 'none|constant_velocity|external')" -eq 0 ] ||
+[ "$(column vlo/frames.csv lo_prior | grep -cvxE 'none|constant_velocity|external|cold_start')" -eq 0 ] ||
 	fail "lo_prior holds something else than a prior source (columns shifted?)"
 
 # LOAM's guess per frame: the VO's metric motion when there is one, constant velocity otherwise.

@@ -30,7 +30,7 @@ void addCar(World& w, const Eigen::Isometry3d& frame, int body_tex, int cabin_te
 
 void addPole(World& w, const Eigen::Isometry3d& frame, double height, int pole_tex, int sign_tex)
 {
-	addPrism(w, frame, 0.09, height, 8, pole_tex);
+	addPrism(w, frame, 0.09, height, 16, pole_tex);
 	// Lamp arm over the road (towards -y) and the lamp head.
 	addBox(w, raised(frame, 0, -0.7, height - 0.1), 0.08, 1.4, 0.08, pole_tex, pole_tex);
 	addBox(w, raised(frame, 0, -1.3, height - 0.25), 0.35, 0.5, 0.15, pole_tex, pole_tex);
@@ -44,7 +44,7 @@ void addTree(World& w, const Eigen::Vector3d& base, double size, int bark_tex, i
 	f.translation() = base - Eigen::Vector3d(0, 0, 0.3);
 	f.rotate(Eigen::AngleAxisd(rng.uniform(0, M_PI), Eigen::Vector3d::UnitZ()));
 	const double trunk = size * rng.uniform(2.2, 3.5), r = size * rng.uniform(0.12, 0.22);
-	addPrism(w, f, r, trunk + 0.3 + size, 7, bark_tex);
+	addPrism(w, f, r, trunk + 0.3 + size, 24, bark_tex);
 	const double R = size * rng.uniform(1.5, 2.6);
 	const Eigen::Vector3d c = base + Eigen::Vector3d(0, 0, trunk + R * 0.8);
 	addBlob(w, c, Eigen::Vector3d(R, R * rng.uniform(0.8, 1.0), R * rng.uniform(0.75, 1.0)), 0.22, foliage_tex, rng);

@@ -1,13 +1,17 @@
 #include <vlo/loam/cold_start.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
+#include <vector>
 
 namespace vlo::loam
 {
 namespace
 {
 constexpr double kInlierDistance = 0.1;  // [m] real KITTI residuals are 2-10 cm (doc/LOAM.md)
-}
+constexpr double kAgreement = 0.05;  // [m] results this close are one answer
+}  // namespace
 
 int countInliers(const Matches& m, const Eigen::Isometry3d& T, double tolerance)
 {
@@ -21,6 +25,19 @@ int countInliers(const Matches& m, const Eigen::Isometry3d& T, double tolerance)
 	return n;
 }
 
+double inliersAlong(const Matches& m, const Eigen::Isometry3d& T, double tolerance, const Eigen::Vector3d& d)
+{
+	double sum = 0;
+	for (const EdgeMatch& e : m.edges)
+	{
+		const Eigen::Vector3d v = T * e.p - e.a;
+		if ((v - e.u * e.u.dot(v)).norm() <= tolerance) sum += (d - e.u * e.u.dot(d)).squaredNorm();
+	}
+	for (const PlaneMatch& p : m.planes)
+		if (std::abs(p.n.dot(T * p.p) + p.d) <= tolerance) sum += p.n.dot(d) * p.n.dot(d);
+	return sum;
+}
+
 ColdStart searchFirstMotion(const ScanToScanOdometry& odometry, const FeatureSet& curr, double range, double step)
 {
 	std::vector<Eigen::Vector3d> starts{Eigen::Vector3d::Zero()};
@@ -28,8 +45,12 @@ ColdStart searchFirstMotion(const ScanToScanOdometry& odometry, const FeatureSet
 		for (int axis = 0; axis < 2; ++axis)  // x, y
 			for (double sign : {1.0, -1.0}) starts.push_back(sign * k * step * Eigen::Vector3d::Unit(axis));
 	ColdStart best;
-	best.inliers = -1;
-	Matches m;
+	struct Result
+	{
+		Eigen::Isometry3d motion;
+		Matches matches;
+	};
+	std::vector<Result> results;
 	for (const Eigen::Vector3d& start : starts)
 	{
 		Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
@@ -37,11 +58,29 @@ ColdStart searchFirstMotion(const ScanToScanOdometry& odometry, const FeatureSet
 		const ScanToScanOdometry::Result r = odometry.match(curr, guess);
 		++best.hypotheses;
 		if (!r.ok) continue;
-		odometry.findMatches(curr, r.T_prev_curr, m);
-		const int inliers = countInliers(m, r.T_prev_curr, kInlierDistance);
-		if (inliers > best.inliers) best.inliers = inliers, best.motion = r.T_prev_curr;
+		results.push_back({r.T_prev_curr, {}});
+		odometry.findMatches(curr, r.T_prev_curr, results.back().matches);
 	}
-	best.inliers = std::max(best.inliers, 0);
+	if (results.empty()) return best;
+	// The level direction in which the results spread most.
+	Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+	for (const Result& r : results) mean += r.motion.translation().head<2>() / static_cast<double>(results.size());
+	Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+	for (const Result& r : results)
+	{
+		const Eigen::Vector2d x = r.motion.translation().head<2>() - mean;
+		scatter += x * x.transpose() / static_cast<double>(results.size());
+	}
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(scatter);
+	const bool agree = es.eigenvalues()(1) < kAgreement * kAgreement;
+	const Eigen::Vector3d d(es.eigenvectors()(0, 1), es.eigenvectors()(1, 1), 0);
+	double best_score = -1;
+	for (const Result& r : results)
+	{
+		const int inliers = countInliers(r.matches, r.motion, kInlierDistance);
+		const double score = agree ? inliers : inliersAlong(r.matches, r.motion, kInlierDistance, d);
+		if (score > best_score) best_score = score, best.inliers = inliers, best.motion = r.motion;
+	}
 	return best;
 }
 }  // namespace vlo::loam

@@ -125,23 +125,27 @@ bool ScanToMap::fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMat
 	return true;
 }
 
-bool ScanToMap::seenFromTooFar(const Eigen::Vector3d& u, bool scan_silhouette, const std::uint32_t* tags, int k,
-	const Eigen::Isometry3d& T) const
+bool ScanToMap::seenFromTooFar(const Eigen::Vector3d& u, const std::uint32_t* tags, int k, const Eigen::Isometry3d& T) const
 {
 	if (opt_.view_dependent_reach <= 0) return false;
 	// The LiDAR's spin axis in the map; a line's elevation is its angle out of the plane normal to it.
-	bool depends_on_view = std::abs(u.dot(T.linear().col(2))) < std::sin(opt_.min_line_elevation_deg * kRadPerDeg);
-	if (opt_.view_dependent_silhouettes)
-	{
-		depends_on_view = depends_on_view || scan_silhouette;
-		for (int i = 0; i < k; ++i) depends_on_view = depends_on_view || (tags[i] & 1u);
-	}
-	if (!depends_on_view) return false;
+	if (std::abs(u.dot(T.linear().col(2))) >= std::sin(opt_.min_line_elevation_deg * kRadPerDeg)) return false;
 	const Eigen::Vector3f here = T.translation().cast<float>();
 	const float reach2 = static_cast<float>(opt_.view_dependent_reach * opt_.view_dependent_reach);
 	for (int i = 0; i < k; ++i)
 		if ((scan_origins_[tags[i] >> 1] - here).squaredNorm() > reach2) return true;
 	return false;
+}
+
+int ScanToMap::keepSimilarViews(const Eigen::Vector3f& q, const Eigen::Vector3f& here, Eigen::Vector3f* nn, std::uint32_t* tags, int n) const
+{
+	const float cos_max = static_cast<float>(std::cos(opt_.outline_view_change_deg * kRadPerDeg));
+	const Eigen::Vector2f now = (q - here).head<2>().normalized();
+	int kept = 0;
+	for (int i = 0; i < n; ++i)
+		if (now.dot((nn[i] - scan_origins_[tags[i] >> 1]).head<2>().normalized()) >= cos_max)
+			nn[kept] = nn[i], tags[kept] = tags[i], ++kept;
+	return kept;
 }
 
 bool ScanToMap::seenFromOtherRange(const Eigen::Vector3f& p, const Eigen::Vector3f* nn, const std::uint32_t* tags, int k) const
@@ -161,19 +165,29 @@ void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Mat
 	const Eigen::Matrix3f R = T.linear().cast<float>();
 	const Eigen::Vector3f t = T.translation().cast<float>();
 	const int k = opt_.knn;
-	Eigen::Vector3f nn[32];
+	// Where outlines need views like the current one, the nearest points of other views give way
+	// to those of similar views a little farther (within max_nn_distance).
+	const bool by_view = opt_.outline_view_change_deg > 0;
+	constexpr int kMaxCandidates = 32;
+	const int candidates = by_view ? std::min(3 * k, kMaxCandidates) : k;
+	Eigen::Vector3f nn[kMaxCandidates];
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
 	Eigen::Vector3d c;
-	std::uint32_t tags[32];
+	std::uint32_t tags[kMaxCandidates];
 	for (std::size_t e = 0; e < in.edges.size(); ++e)
 	{
 		const Eigen::Vector3f& p = in.edges[e];
-		if (edge_map_.knn(R * p + t, k, static_cast<float>(opt_.max_nn_distance), nn, tags) < k) continue;
+		const Eigen::Vector3f q = R * p + t;
+		const int n = edge_map_.knn(q, candidates, static_cast<float>(opt_.max_nn_distance), nn, tags);
+		if (n < k) continue;
+		bool outline = e < in.edge_silhouette.size() && in.edge_silhouette[e];
+		for (int i = 0; i < k; ++i) outline = outline || (tags[i] & 1u);
+		if (by_view && outline && keepSimilarViews(q, t, nn, tags, n) < k) continue;
 		if (seenFromOtherRange(p, nn, tags, k)) continue;
 		fit(nn, k, c, es);
 		if (!lineLike(es, opt_.edge_eigen_ratio) || flatAcross(es, opt_.edge_flatness_ratio)) continue;
 		const Eigen::Vector3d u = es.eigenvectors().col(2);
-		if (seenFromTooFar(u, e < in.edge_silhouette.size() && in.edge_silhouette[e], tags, k, T)) continue;
+		if (seenFromTooFar(u, tags, k, T)) continue;
 		out.edges.push_back(EdgeMatch{p.cast<double>(), c, u});
 	}
 }

@@ -111,9 +111,9 @@ void MappingOptions::declare(OptionTable& t)
 	t.add("max_nn_distance", max_nn_distance, "> 0", "all neighbours must be this close [m]");
 	t.add("edge_eigen_ratio", edge_eigen_ratio, ">= 1", "line if largest eigenvalue > ratio * middle");
 	t.add("edge_flatness_ratio", edge_flatness_ratio, ">= 0", "no line where its points spread across it within a surface: middle eigenvalue > ratio * max(smallest, 1 cm^2) (0: off, as A-LOAM)");
-	t.add("min_line_elevation_deg", min_line_elevation_deg, "[0, 90]", "map lines flatter than this to the LiDAR's horizontal plane depend on the view, as silhouettes do [deg]");
+	t.add("min_line_elevation_deg", min_line_elevation_deg, "[0, 90]", "map lines flatter than this to the LiDAR's horizontal plane depend on the view (where a ring meets them moves with the sensor) [deg]");
 	t.add("view_dependent_reach", view_dependent_reach, ">= 0", "lines that depend on the view are matched only against map points seen from within this distance (0: any) [m]");
-	t.add("view_dependent_silhouettes", view_dependent_silhouettes, "true | false", "edge points on an outline against a farther surface depend on the view, as flat lines do");
+	t.add("outline_view_change_deg", outline_view_change_deg, "[0, 180]", "lines through outline points only from map points seen from within this angle of the current view [deg] (0: any view, A-LOAM)");
 	t.add("edge_range_ratio", edge_range_ratio, ">= 0", "lines are matched only against map points seen from within this factor of the edge point's range (0: any)");
 	t.add("plane_max_distance", plane_max_distance, "> 0", "plane if all neighbours are this close to it [m]");
 	t.add("plane_line_ratio", plane_line_ratio, ">= 1", "no plane if largest eigenvalue > ratio * middle (one ring)");

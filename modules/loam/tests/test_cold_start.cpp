@@ -5,6 +5,7 @@
 #include <vlo/loam/cold_start.h>
 #include <vlo/loam/lidar_odometry.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "synthetic_world.h"
@@ -104,6 +105,29 @@ TEST(ColdStart, InliersAreTheMatchesWithinTheDistance)
 	EXPECT_EQ(countInliers(m, up, 0.1), 2);  // the plane point and the second edge point (7 cm off)
 	EXPECT_EQ(countInliers(m, up, 0.04), 0);
 	EXPECT_EQ(countInliers(m, up, 0.4), 3);
+}
+
+TEST(ColdStart, InliersAlongTheWayAreThoseThatFixIt)
+{
+	// At the identity: the ground (normal z), a wall along the road (normal y), a curb (a line along
+	// x), a pole (a vertical line) and a wall across the road (normal x, 30 deg off), all fit. Along x
+	// only the pole (1) and the wall across (cos^2 30 deg) fix the translation; along y the wall along
+	// the road, the curb and the pole (1 each) and the wall across (sin^2 30 deg).
+	Matches m;
+	m.planes.push_back(PlaneMatch{Eigen::Vector3d(3, 0, -1.7), Eigen::Vector3d::UnitZ(), 1.7});
+	m.planes.push_back(PlaneMatch{Eigen::Vector3d(3, 8, 1), Eigen::Vector3d::UnitY(), -8});
+	const Eigen::Vector3d across(std::cos(M_PI / 6), std::sin(M_PI / 6), 0);
+	m.planes.push_back(PlaneMatch{20 * across, across, -20});
+	m.edges.push_back(EdgeMatch{Eigen::Vector3d(2, -4, -1.6), Eigen::Vector3d(0, -4, -1.6), Eigen::Vector3d::UnitX()});
+	m.edges.push_back(EdgeMatch{Eigen::Vector3d(6, -5, 0.5), Eigen::Vector3d(6, -5, 0), Eigen::Vector3d::UnitZ()});
+	const Eigen::Isometry3d I = Eigen::Isometry3d::Identity();
+	EXPECT_EQ(countInliers(m, I, 0.1), 5);
+	EXPECT_NEAR(inliersAlong(m, I, 0.1, Eigen::Vector3d::UnitX()), 1 + 0.75, 1e-12);
+	EXPECT_NEAR(inliersAlong(m, I, 0.1, Eigen::Vector3d::UnitY()), 3 + 0.25, 1e-12);
+	Eigen::Isometry3d ahead = I;
+	ahead.translation().x() = 0.5;  // the pole and the wall across no longer fit
+	EXPECT_EQ(countInliers(m, ahead, 0.1), 3);
+	EXPECT_NEAR(inliersAlong(m, ahead, 0.1, Eigen::Vector3d::UnitX()), 0, 1e-12);
 }
 
 TEST(ColdStart, FirstMotionSearchKeepsTheHypothesisThatFitsBest)

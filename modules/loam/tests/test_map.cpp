@@ -5,7 +5,9 @@
 #include <vlo/loam/voxel_map.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
+#include <utility>
 
 #include "synthetic_world.h"
 #include "test_helpers.h"
@@ -58,7 +60,8 @@ TEST(Map, LinesThatDependOnTheViewAreMatchedOnlyFromNearby)
 {
 	// Edge points (map frame) of a vertical crease line 5 m ahead, of a flat line along the road 3 m
 	// to the left and 1.5 m down (a curb), and of a second vertical line on a silhouette, 0.21 m
-	// apart, seen from 4 m behind the pose the probes are matched at.
+	// apart, seen from 4 m behind the pose the probes are matched at: the silhouette's bearing was
+	// -18.8 deg then, -31.0 deg now.
 	FeatureSet f;
 	const auto add = [&](const Eigen::Vector3f& p, bool silhouette) {
 		ScanPoint q;
@@ -74,22 +77,63 @@ TEST(Map, LinesThatDependOnTheViewAreMatchedOnlyFromNearby)
 	ScanToMap::Input probes;
 	probes.edges = {Eigen::Vector3f(5.15f, 0.1f, 0.1f), Eigen::Vector3f(5.0f, 3.15f, -1.5f), Eigen::Vector3f(5.15f, -3.1f, 0.1f)};
 	probes.edge_silhouette = {0, 0, 0};
-	const auto matches = [&](double reach, double min_elevation_deg, bool silhouettes = true) {
+	const auto matches = [&](double reach, double min_elevation_deg, double outline_view_change_deg) {
 		MappingOptions o;
 		o.view_dependent_reach = reach;
 		o.min_line_elevation_deg = min_elevation_deg;
-		o.view_dependent_silhouettes = silhouettes;
+		o.outline_view_change_deg = outline_view_change_deg;
 		ScanToMap mapper(o);
 		mapper.insert(f, seen_from);
 		Matches m;
 		mapper.findMatches(probes, Eigen::Isometry3d::Identity(), true, m);
 		return m.edges.size();
 	};
-	EXPECT_EQ(matches(0, 53), 3u);  // any reach (A-LOAM)
-	EXPECT_EQ(matches(5, 53), 3u);  // seen from 4 m: near enough
-	EXPECT_EQ(matches(3, 53), 1u);  // too far for the curb's flat line and the silhouette
-	EXPECT_EQ(matches(3, 0), 2u);  // no line counts as flat: only the silhouette goes
-	EXPECT_EQ(matches(3, 53, false), 2u);  // silhouettes as any line: only the curb goes
+	EXPECT_EQ(matches(0, 53, 0), 3u);  // any reach, any view (A-LOAM)
+	EXPECT_EQ(matches(5, 53, 20), 3u);  // seen from 4 m, 12 deg away: near enough
+	EXPECT_EQ(matches(3, 53, 20), 2u);  // too far for the curb's flat line
+	EXPECT_EQ(matches(3, 53, 10), 1u);  // ... and the silhouette seen from 12 deg away
+	EXPECT_EQ(matches(3, 0, 10), 2u);  // no line counts as flat: only the silhouette goes
+}
+
+TEST(Map, OutlinesAreFitFromViewsLikeTheCurrentOne)
+{
+	// A pole's outline 10 m to the right went into the map twice: seen from 6 m behind (bearing
+	// -59 deg, now -90: the outline of another side of the body, 5 cm ahead of the probe) and from
+	// 1 m behind (-87 deg, 0.4 m behind the probe). The line is fit from the similar view.
+	FeatureSet near_view, other_view;
+	for (int i = 0; i < 40; ++i)
+	{
+		ScanPoint q;
+		q.p = Eigen::Vector3f(0.05f, -10.0f, -1.1f + 0.06f * i);
+		other_view.less_sharp.push_back(q);
+		other_view.less_sharp_silhouette.push_back(1);
+		q.p.x() = -0.4f;
+		near_view.less_sharp.push_back(q);
+		near_view.less_sharp_silhouette.push_back(1);
+	}
+	const auto lineThrough = [&](double outline_view_change_deg) {
+		MappingOptions o;
+		o.map_edge_resolution = 0.05;
+		o.outline_view_change_deg = outline_view_change_deg;
+		ScanToMap mapper(o);
+		for (const auto& [f, x] : {std::pair{other_view, -6.0f}, std::pair{near_view, -1.0f}})
+		{
+			Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+			T.translation().x() = x;
+			FeatureSet in_sensor = f;
+			for (ScanPoint& q : in_sensor.less_sharp) q.p.x() -= x;
+			mapper.insert(in_sensor, T);
+		}
+		ScanToMap::Input probe;
+		probe.edges = {Eigen::Vector3f(0.0f, -10.0f, 0.1f)};
+		probe.edge_silhouette = {1};
+		Matches m;
+		mapper.findMatches(probe, Eigen::Isometry3d::Identity(), true, m);
+		return m.edges.empty() ? std::nan("") : m.edges[0].a.x();
+	};
+	EXPECT_NEAR(lineThrough(0), 0.05, 0.01);  // A-LOAM: the nearest points, another side of the body
+	EXPECT_NEAR(lineThrough(20), -0.4, 0.01);  // within 20 deg: the view from 1 m behind
+	EXPECT_TRUE(std::isnan(lineThrough(3)));  // no view within 3 deg
 }
 
 TEST(Map, LinesAreMatchedOnlyToPointsSeenFromASimilarRange)

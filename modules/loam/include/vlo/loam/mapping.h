@@ -73,10 +73,11 @@ class ScanToMap
    private:
 	/// The scan's edge points downsampled to `leaf`, creases first, then silhouettes: how many are creases.
 	std::size_t downsampledEdges(const FeatureSet& f, double leaf, std::vector<Eigen::Vector3f>& out) const;
-	/// Whether a line match depends on the view (a silhouette in the scan or among the map points
-	/// fitted, or a flat line) and some of its map points were seen from beyond the reach.
-	bool seenFromTooFar(const Eigen::Vector3d& u, bool scan_silhouette, const std::uint32_t* tags, int k,
-		const Eigen::Isometry3d& T) const;
+	/// Whether a flat line (its place depends on the view) has map points seen from beyond the reach.
+	bool seenFromTooFar(const Eigen::Vector3d& u, const std::uint32_t* tags, int k, const Eigen::Isometry3d& T) const;
+	/// Keeps, in order, those of the n map points nn (with their tags) seen from within
+	/// outline_view_change_deg of the direction `here` sees q from; how many.
+	int keepSimilarViews(const Eigen::Vector3f& q, const Eigen::Vector3f& here, Eigen::Vector3f* nn, std::uint32_t* tags, int n) const;
 	/// Whether some of the k map points nn (with their tags) were seen from a range more than
 	/// edge_range_ratio times or less than 1 / edge_range_ratio times the range of scan point p.
 	bool seenFromOtherRange(const Eigen::Vector3f& p, const Eigen::Vector3f* nn, const std::uint32_t* tags, int k) const;

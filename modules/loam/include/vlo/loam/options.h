@@ -135,9 +135,13 @@ struct MappingOptions : public OptionSet
 	/// this elevation [deg] ...
 	double min_line_elevation_deg = 53.0;
 	double view_dependent_reach = 3.0;  ///< ... nearby: within this of the current position [m] (0: any)
-	/// Silhouettes (an outline against a farther surface, FeatureSet) depend on the view too: they
-	/// move round a rounded body as the sensor moves. Not by default: tree trunks need them.
-	bool view_dependent_silhouettes = false;
+	/// A line through outline points (silhouettes: the beam leaves a body for a farther surface,
+	/// FeatureSet) is fit only from map points seen from within this angle of the direction the
+	/// point is seen from now (horizontal bearing from the sensor) [deg]: on a rounded body (a
+	/// trunk, a pole, a hedge, a car) the outline lies where the view grazes it and moves round the
+	/// body as the view turns; fit from views all round, such lines pulled a real drive short
+	/// (doc/LOAM.md step 4). 0: from any view, as A-LOAM.
+	double outline_view_change_deg = 45.0;
 	/// An edge's apparent place depends on the range it is seen from (a real beam's footprint grows
 	/// with range and the nearest surface within it answers, so outlines and corners bloom; which
 	/// laser sees it changes with range): lines are matched only against map points seen from

@@ -178,11 +178,11 @@ void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Mat
 	{
 		const Eigen::Vector3f& p = in.edges[e];
 		const Eigen::Vector3f q = R * p + t;
-		const int n = edge_map_.knn(q, candidates, static_cast<float>(opt_.max_nn_distance), nn, tags);
-		if (n < k) continue;
+		const float reach = static_cast<float>(opt_.max_nn_distance);
+		if (edge_map_.knn(q, k, reach, nn, tags) < k) continue;
 		bool outline = e < in.edge_silhouette.size() && in.edge_silhouette[e];
 		for (int i = 0; i < k; ++i) outline = outline || (tags[i] & 1u);
-		if (by_view && outline && keepSimilarViews(q, t, nn, tags, n) < k) continue;
+		if (by_view && outline && keepSimilarViews(q, t, nn, tags, edge_map_.knn(q, candidates, reach, nn, tags)) < k) continue;
 		if (seenFromOtherRange(p, nn, tags, k)) continue;
 		fit(nn, k, c, es);
 		if (!lineLike(es, opt_.edge_eigen_ratio) || flatAcross(es, opt_.edge_flatness_ratio)) continue;

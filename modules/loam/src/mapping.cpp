@@ -170,6 +170,7 @@ void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Mat
 	const bool by_view = opt_.outline_view_change_deg > 0;
 	constexpr int kMaxCandidates = 32;
 	const int candidates = by_view ? std::min(3 * k, kMaxCandidates) : k;
+	const float reach = static_cast<float>(opt_.max_nn_distance);
 	Eigen::Vector3f nn[kMaxCandidates];
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
 	Eigen::Vector3d c;
@@ -178,11 +179,13 @@ void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Mat
 	{
 		const Eigen::Vector3f& p = in.edges[e];
 		const Eigen::Vector3f q = R * p + t;
-		const float reach = static_cast<float>(opt_.max_nn_distance);
 		if (edge_map_.knn(q, k, reach, nn, tags) < k) continue;
-		bool outline = e < in.edge_silhouette.size() && in.edge_silhouette[e];
-		for (int i = 0; i < k; ++i) outline = outline || (tags[i] & 1u);
-		if (by_view && outline && keepSimilarViews(q, t, nn, tags, edge_map_.knn(q, candidates, reach, nn, tags)) < k) continue;
+		if (by_view)
+		{
+			bool outline = e < in.edge_silhouette.size() && in.edge_silhouette[e];
+			for (int i = 0; i < k && !outline; ++i) outline = tags[i] & 1u;
+			if (outline && keepSimilarViews(q, t, nn, tags, edge_map_.knn(q, candidates, reach, nn, tags)) < k) continue;
+		}
 		if (seenFromOtherRange(p, nn, tags, k)) continue;
 		fit(nn, k, c, es);
 		if (!lineLike(es, opt_.edge_eigen_ratio) || flatAcross(es, opt_.edge_flatness_ratio)) continue;

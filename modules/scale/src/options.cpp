@@ -49,6 +49,7 @@ void ScaleOptions::declare(OptionTable& t)
 	t.add("min_inlier_ratio", min_inlier_ratio, "[0, 1]", "smallest inlier fraction of the triangulated points");
 	t.add("correction_threshold", correction_threshold, ">= 0", "correct the VO map when |s - 1| >= this");
 	t.add("initial_refine_threshold", initial_refine_threshold, ">= 0", "the first full window after the initial estimate corrects when |median - 1| >= this (0: off)");
+	t.add("initial_refine_sigmas", initial_refine_sigmas, ">= 0", "that window corrects before it is full when its median is off by this many standard errors (0: waits)");
 	t.add("correction_enabled", correction_enabled, "true | false", "false: scale fixed once after initialisation");
 	t.add("correction_window", correction_window, ">= 1", "median of the last N valid estimates decides (1 = paper)");
 }

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 #include <vlo/scale/policy.h>
 
+#include <vector>
+
 using namespace vlo::scale;
 
 namespace
@@ -124,4 +126,37 @@ TEST(Policy, TheFirstWindowRefinesTheInitialScaleMoreFinely)
 	ScaleCorrectionPolicy off(opt);
 	off.decide(estimate(20.0));
 	for (double s : {0.99, 0.99, 0.99}) EXPECT_FALSE(off.decide(estimate(s)).apply()) << s;
+}
+
+// While the first window fills, five estimates that agree the initial scale is off correct it at once;
+// scattered ones, or initial_refine_sigmas = 0, wait for the full window.
+TEST(Policy, TheFirstWindowCorrectsEarlyWhenItsEstimatesAgree)
+{
+	ScaleOptions opt;
+	opt.correction_window = 15;
+	opt.initial_refine_threshold = 0.005;
+	const std::vector<double> agree = {1.03, 1.04, 1.035, 1.045, 1.04};  // median 1.04, sigma ~1 %
+	const std::vector<double> scattered = {1.04, 0.97, 1.07, 0.95, 1.04};  // median 1.04, sigma ~4.4 %
+	auto decisionsUntil = [&](const std::vector<double>& estimates, ScaleCorrectionPolicy& p) {
+		p.decide(estimate(20.0));
+		int n = 0;
+		for (double s : estimates)
+		{
+			++n;
+			if (p.decide(estimate(s)).apply()) return n;
+		}
+		return 0;
+	};
+	ScaleCorrectionPolicy sure(opt);
+	EXPECT_EQ(decisionsUntil(agree, sure), 5);  // 4 % off, 2 standard errors are 1.1 %
+	EXPECT_NEAR(sure.cumulative(), 20.0 * 1.04, 1e-9);
+	// The first window starts again on the corrected map: still refining at 0.5 %, early again.
+	for (double s : {1.02, 1.02, 1.02, 1.02}) EXPECT_FALSE(sure.decide(estimate(s)).apply());
+	EXPECT_TRUE(sure.decide(estimate(1.02)).apply());  // 2 standard errors of 1 % scatter: 1.1 %
+
+	ScaleCorrectionPolicy unsure(opt);
+	EXPECT_EQ(decisionsUntil(scattered, unsure), 0);  // 2 standard errors are 4.9 %
+	opt.initial_refine_sigmas = 0;
+	ScaleCorrectionPolicy waits(opt);
+	EXPECT_EQ(decisionsUntil(agree, waits), 0);
 }

@@ -62,6 +62,10 @@ struct ScaleOptions : public OptionSet
 	/// (the initial estimate is one frame pair's, scattered by 2-4 %); later windows use
 	/// correction_threshold. 0 = off: correction_threshold for every window.
 	double initial_refine_threshold = 0.0;
+	/// While that window fills (from 5 estimates on), correct as soon as its median is off by more than
+	/// this many standard errors (and by initial_refine_threshold); the window then starts again on the
+	/// corrected map. 0 = wait for the full window.
+	double initial_refine_sigmas = 2.0;
 	bool correction_enabled = true;  ///< false: only the first estimate (initial metric scale) is applied
 	/// Median of the last N valid estimates decides a correction (1 = each estimate alone, the paper).
 	/// Single estimates scatter by 2-4 %, as much as the 2 % threshold: rescaling the VO on each of

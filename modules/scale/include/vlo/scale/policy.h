@@ -46,6 +46,7 @@ class ScaleCorrectionPolicy
    private:
 	double threshold_;
 	double refine_threshold_;  ///< for the first full window after the initial estimate
+	double early_sigmas_;  ///< that window corrects before it is full when this sure (0: never)
 	bool refined_ = false;  ///< that window has decided since the last reset
 	bool enabled_;
 	std::size_t window_;

@@ -31,7 +31,7 @@ std::vector<vlo::CliOption> withCommonOptions(std::vector<vlo::CliOption> option
 {
 	options.push_back({"camera-label", "L", "sensor label of the images (default CAMERA)"});
 	options.push_back({"lidar-label", "L", "sensor label of the scans (default LIDAR)"});
-	options.push_back({"overwrite", "", "replace an earlier import's FILE.rawlog, FILE_Images/ and FILE.gt.tum"});
+	options.push_back({"overwrite", "", "replace an earlier import's FILE.rawlog, FILE_Images/, FILE.gt.tum and FILE.gt_velocity.tum"});
 	return options;
 }
 
@@ -42,7 +42,8 @@ void readCommon(const vlo::CommandLine& cl, Import& opt)
 	opt.camera_label = cl.get("camera-label", opt.camera_label);
 	opt.lidar_label = cl.get("lidar-label", opt.lidar_label);
 	if (cl.has("overwrite")) return;
-	for (const std::string& p : {opt.out, vlo::io::rawlogImagesDir(opt.out), vlo::io::groundTruthPathFor(opt.out)})
+	for (const std::string& p : {opt.out, vlo::io::rawlogImagesDir(opt.out), vlo::io::groundTruthPathFor(opt.out),
+			 vlo::io::velocityTruthPathFor(opt.out)})
 		if (std::filesystem::exists(p)) vlo::failInput(p, "exists: give --overwrite to replace it, or another --out");
 }
 
@@ -52,6 +53,8 @@ void report(const vlo::io::ImportSummary& s)
 	std::printf("vlo-import: %s: %zu frames (%zu images, %zu scans) in %.1f s (%.1f frames/s)\n", s.rawlog.c_str(), s.frames,
 		s.images, s.scans, s.seconds, s.seconds > 0 ? s.frames / s.seconds : 0.0);
 	if (!s.ground_truth.empty()) std::printf("vlo-import: %s: ground truth, vehicle frame\n", s.ground_truth.c_str());
+	if (!s.velocity_truth.empty())
+		std::printf("vlo-import: %s: the same truth dead-reckoned from its velocities (lengths, steps)\n", s.velocity_truth.c_str());
 }
 
 int kittiOdometry(int argc, char** argv)

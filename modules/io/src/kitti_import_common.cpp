@@ -13,13 +13,19 @@ namespace vlo::io
 {
 namespace fs = std::filesystem;
 
-std::string groundTruthPathFor(const std::string& rawlog_path)
+namespace
+{
+std::string besideRawlog(const std::string& rawlog_path, const std::string& suffix)
 {
 	const std::string ext = ".rawlog";
 	if (rawlog_path.size() > ext.size() && rawlog_path.compare(rawlog_path.size() - ext.size(), ext.size(), ext) == 0)
-		return rawlog_path.substr(0, rawlog_path.size() - ext.size()) + ".gt.tum";
-	return rawlog_path + ".gt.tum";
+		return rawlog_path.substr(0, rawlog_path.size() - ext.size()) + suffix;
+	return rawlog_path + suffix;
 }
+}  // namespace
+
+std::string groundTruthPathFor(const std::string& rawlog_path) { return besideRawlog(rawlog_path, ".gt.tum"); }
+std::string velocityTruthPathFor(const std::string& rawlog_path) { return besideRawlog(rawlog_path, ".gt_velocity.tum"); }
 
 int chooseCamera(int camera, const std::string& prefix)
 {

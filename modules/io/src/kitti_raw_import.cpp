@@ -47,8 +47,13 @@ SpinningSweep sweepOf(std::size_t index, double t_scan, const std::vector<double
 }
 
 /// OXTS ground truth of the frames (oxts/data/<index>.txt at oxts/timestamps.txt's times) in the
-/// Velodyne frame; empty, with a warning, when the drive or the calibration lacks what it needs.
-Trajectory oxtsGroundTruth(const KittiRawImport& opt, const std::vector<KittiFrameFiles>& frames, ImportSummary& summary)
+/// Velodyne frame, from the positions and dead-reckoned from the velocities; empty, with a warning,
+/// when the drive or the calibration lacks what it needs.
+struct OxtsTruth
+{
+	Trajectory positions, velocities;
+};
+OxtsTruth oxtsGroundTruth(const KittiRawImport& opt, const std::vector<KittiFrameFiles>& frames, ImportSummary& summary)
 {
 	const std::string oxts = (fs::path(opt.drive) / "oxts").string();
 	const std::string imu_to_velo = (fs::path(opt.calib) / "calib_imu_to_velo.txt").string();
@@ -70,7 +75,12 @@ Trajectory oxtsGroundTruth(const KittiRawImport& opt, const std::vector<KittiFra
 		records.push_back(readOxtsRecord(oxts + "/data/" + name));
 		t.push_back(times[f.index]);
 	}
-	return oxtsVelodyneTrajectory(records, t, readKittiImuToVelo(imu_to_velo));
+	const Eigen::Isometry3d velo_T_imu = readKittiImuToVelo(imu_to_velo);
+	OxtsTruth truth{velodyneTrajectory(oxtsPoses(records), t, velo_T_imu), {}};
+	const auto dead_reckoned = oxtsDeadReckonedPoses(records, t);
+	if (dead_reckoned.empty()) summary.warnings.push_back(oxts + ": records without velocities, no " + velocityTruthPathFor(opt.out) + " written");
+	else truth.velocities = velodyneTrajectory(dead_reckoned, t, velo_T_imu);
+	return truth;
 }
 }  // namespace
 
@@ -134,7 +144,7 @@ ImportSummary importKittiRaw(const KittiRawImport& opt)
 		summary.warnings.push_back(velo_dir + "/data: " + std::to_string(missing_scans) + " frames have no scan");
 
 	// Read the ground truth before writing anything, so that a bad record leaves no output.
-	const Trajectory gt = oxtsGroundTruth(opt, frames, summary);
+	const OxtsTruth gt = oxtsGroundTruth(opt, frames, summary);
 
 	SensorRig rig;
 	rig.has_camera = true;
@@ -142,10 +152,15 @@ ImportSummary importKittiRaw(const KittiRawImport& opt)
 	rig.vehicle_T_camera = calib.camera_T_velo.inverse();
 	rig.has_lidar = lidar;
 	writeKittiFrames(frames, rig, calib.cam0_T_velo.inverse(), opt.camera_label, opt.lidar_label, "kitti-raw", summary);
-	if (!gt.empty())
+	if (!gt.positions.empty())
 	{
 		summary.ground_truth = groundTruthPathFor(opt.out);
-		writeTum(summary.ground_truth, gt);
+		writeTum(summary.ground_truth, gt.positions);
+	}
+	if (!gt.velocities.empty())
+	{
+		summary.velocity_truth = velocityTruthPathFor(opt.out);
+		writeTum(summary.velocity_truth, gt.velocities);
 	}
 	summary.seconds = msSince(start) / 1000.0;
 	return summary;

@@ -64,6 +64,49 @@ TEST(KittiOxts, MercatorScaledByTheFirstLatitudeAndYawPitchRoll)
 	EXPECT_LT((poses[3].linear() - first.transpose() * Rt).norm(), 1e-12);
 }
 
+TEST(KittiOxts, DeadReckonedFromTheVelocitiesByTrapezoids)
+{
+	// East at 10 m/s, then accelerating north; the first record faces yaw 0.3, so the positions are
+	// turned into its frame. Times 0, 0.1, 0.3.
+	OxtsRecord a{49.0, 8.4, 100.0, 0.0, 0.0, 0.3, 0.0, 10.0, 0.0, true};
+	OxtsRecord b = a, c = a;
+	b.vn = 2.0, b.vu = 1.0;
+	c.vn = 4.0, c.vu = 1.0, c.yaw = 0.5;
+	const auto poses = oxtsDeadReckonedPoses({a, b, c}, {0.0, 0.1, 0.3});
+	ASSERT_EQ(poses.size(), 3u);
+	const Eigen::Matrix3d first = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+	// 0.1 s at (10, 0, 0) -> (10, 2, 1): (1.0, 0.1, 0.05); then 0.2 s at (10, 2, 1) -> (10, 4, 1): (2.0, 0.6, 0.2).
+	EXPECT_LT((poses[1].translation() - first.transpose() * Eigen::Vector3d(1.0, 0.1, 0.05)).norm(), 1e-12);
+	EXPECT_LT((poses[2].translation() - first.transpose() * Eigen::Vector3d(3.0, 0.7, 0.25)).norm(), 1e-12);
+	EXPECT_LT((poses[2].linear() - oxtsPoses({a, b, c})[2].linear()).norm(), 1e-12);  // the same orientations
+	c.has_velocity = false;
+	EXPECT_TRUE(oxtsDeadReckonedPoses({a, b, c}, {0.0, 0.1, 0.3}).empty());
+	EXPECT_TRUE(oxtsDeadReckonedPoses({a, b}, {0.1, 0.1}).empty());  // no time passes
+}
+
+// Drive 0013's positions (differential GPS, 0.15 m) and its velocities (0.03 m/s) agree on the length
+// of frames 0-29 and part after: the positions make frames 29-47 1 % longer (doc/EVALUATION.md).
+TEST(KittiRawDrive, TheVelocitiesMeasureTheLengthWhereThePositionsWander)
+{
+	const Trajectory pos = readTum(groundTruthPathFor(importedDrive()));
+	const Trajectory vel = readTum(velocityTruthPathFor(importedDrive()));
+	ASSERT_EQ(vel.size(), 48u);
+	EXPECT_TRUE(vel.front().pose.isApprox(Eigen::Isometry3d::Identity(), 1e-9));
+	const auto length = [](const Trajectory& t, std::size_t a, std::size_t b) {
+		return pathLength(Trajectory(t.begin() + static_cast<long>(a), t.begin() + static_cast<long>(b) + 1));
+	};
+	EXPECT_NEAR(length(pos, 0, 29) / length(vel, 0, 29), 1.0, 0.001);
+	EXPECT_NEAR(length(pos, 29, 47) / length(vel, 29, 47), 1.010, 0.002);
+	EXPECT_NEAR(pathLength(pos) / pathLength(vel), 1.0038, 0.001);
+	// Each step of the velocities' track is smooth: 11.7-10.7 m/s without the positions' jumps.
+	for (std::size_t i = 1; i < vel.size(); ++i)
+	{
+		const double v = (vel[i].pose.translation() - vel[i - 1].pose.translation()).norm() / (vel[i].t - vel[i - 1].t);
+		EXPECT_GT(v, 10.6) << i;
+		EXPECT_LT(v, 11.9) << i;
+	}
+}
+
 TEST(KittiRawDrive, GroundTruthIsTheDevkitsPoseInTheVelodyneFrame)
 {
 	const Trajectory gt = readTum(groundTruthPathFor(importedDrive()));

@@ -12,6 +12,8 @@ struct ImportSummary
 	std::size_t invalid_points = 0;  ///< NaN/inf points dropped from the .bin files
 	std::vector<std::string> warnings;  ///< one line each, for the user
 	std::string rawlog, ground_truth;  ///< written files (ground_truth empty when none)
+	/// KITTI raw: the OXTS truth dead-reckoned from its velocities (doc/EVALUATION.md), empty when none
+	std::string velocity_truth;
 	double seconds = 0;  ///< wall time
 };
 
@@ -38,4 +40,6 @@ ImportSummary importKittiRaw(const KittiRawImport& opt);
 
 /// "X.gt.tum" for "X.rawlog" (any other name gets ".gt.tum" appended).
 std::string groundTruthPathFor(const std::string& rawlog_path);
+/// "X.gt_velocity.tum" for "X.rawlog" (likewise).
+std::string velocityTruthPathFor(const std::string& rawlog_path);
 }  // namespace vlo::io

@@ -30,7 +30,7 @@ residual = f"median residual {statistics.median(rms) * 100:.2f} cm"
 evaluation = os.path.join(run, "eval.json")
 if os.path.exists(evaluation):
     e = json.load(open(evaluation))
-    print(f"{name:4s} path/truth {e['est_length_m'] / e['gt_length_m']:.4f}  ATE {e['ate_rmse_m']:.3f} m  "
+    print(f"{name:4s} path/truth {e['path_ratio']:.4f}  ATE {e['ate_rmse_m']:.3f} m  "
           f"t_err {e['kitti_t_err_pct']:.3f} %  {residual}")
 else:
     mode = "vlo" if name == "vlo" else "lo"

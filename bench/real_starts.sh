@@ -45,7 +45,7 @@ import json, os, statistics, sys
 def ratio_ate(path):
     if not os.path.exists(path): return None, None
     e = json.load(open(path))
-    return e["est_length_m"] / e["gt_length_m"], e["ate_rmse_m"]
+    return e["path_ratio"], e["ate_rmse_m"]
 for traj in sys.argv[2:]:
     rows = []
     for start in (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 12):

@@ -30,11 +30,11 @@ const char* statusName(RunStatus s)
 															  : "not run";
 }
 
-/// vlo-eval JSON keys, in column order (doc/EVALUATION.md); the revisit error's last, so that the columns
-/// before them keep their places.
+/// vlo-eval JSON keys, in column order (doc/EVALUATION.md); later additions last (the revisit error,
+/// the path ratio), so that the columns before them keep their places.
 const char* const kEvalKeys[] = {"ate_rmse_m", "are_rmse_deg", "sim3_scale", "kitti_t_err_pct", "kitti_r_err_deg_per_m",
 	"kitti_segments", "rpe_t_rmse_m", "rpe_r_rmse_deg", "n_matched", "gt_length_m", "revisit_pairs", "revisit_t_rmse_m",
-	"revisit_t_max_m", "revisit_r_rmse_deg", "revisit_r_max_deg"};
+	"revisit_t_max_m", "revisit_r_rmse_deg", "revisit_r_max_deg", "path_ratio"};
 }  // namespace
 
 std::string csvResults(const std::vector<RunResult>& results)

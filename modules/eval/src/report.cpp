@@ -54,6 +54,13 @@ struct RevisitNumbers
 {
 	std::optional<double> t_rmse, t_max, r_rmse, r_max;
 };
+/// The estimate's path over the truth's, on the matched poses (none without a truth path).
+std::optional<double> pathRatio(const EvalReport& r)
+{
+	if (!(r.gt_length_m > 0)) return std::nullopt;
+	return r.est_length_m / r.gt_length_m;
+}
+
 RevisitNumbers revisitNumbers(const EvalReport& r)
 {
 	if (!r.revisit || r.revisit->empty()) return {};
@@ -91,7 +98,7 @@ std::string toJson(const EvalReport& r)
 		{"n_est", a.n_est}, {"n_gt", a.n_gt}, {"n_dropped_outside_gt", a.n_outside_span},
 		{"n_dropped_gt_gap", a.n_in_gap}, {"max_dt_s", num(a.max_gap_used_s)},
 		{"gt_translation_only", r.options.gt_translation_only}, {"gt_length_m", num(r.gt_length_m)},
-		{"est_length_m", num(r.est_length_m)}, {"ate_rmse_m", num(ate)}, {"ate_mean_m", num(ate_mean)},
+		{"est_length_m", num(r.est_length_m)}, {"path_ratio", num(pathRatio(r))}, {"ate_rmse_m", num(ate)}, {"ate_mean_m", num(ate_mean)},
 		{"ate_max_m", num(ate_max)}, {"ate_rmse_axes_m", {num(ax), num(ay), num(az)}}, {"ate_pct_of_length", num(ate_pct)}, {"are_rmse_deg", num(are)},
 		{"are_roll_from_orientations_deg", num(are_roll)}, {"sim3_scale", num(scale)}, {"ate_note", noteOrNull(r.ate_note)}, {"are_note", noteOrNull(r.are_note)},
 		{"kitti_frame", r.kitti_frame}, {"kitti_t_err_pct", num(k.t_pct)}, {"kitti_r_err_deg_per_m", num(k.r_deg_m)},
@@ -123,8 +130,9 @@ std::string formatTable(const EvalReport& r)
 	o << "estimate:     " << r.options.est_name << " (" << a.n_est << " poses)\n";
 	o << "matched:      " << a.matched() << " poses; dropped " << a.n_outside_span << " outside the ground truth's span, "
 	  << a.n_in_gap << " in ground-truth gaps > " << fmt("%.3g", a.max_gap_used_s) << " s\n";
-	o << "path length:  ground truth " << fmt("%.2f", r.gt_length_m) << " m, estimate " << fmt("%.2f", r.est_length_m)
-	  << " m\n\n";
+	o << "path length:  ground truth " << fmt("%.2f", r.gt_length_m) << " m, estimate " << fmt("%.2f", r.est_length_m) << " m";
+	if (const auto ratio = pathRatio(r)) o << " (ratio " << fmt("%.4f", *ratio) << ")";
+	o << "\n\n";
 	const auto row = [&](const std::string& name, const std::string& value) {
 		std::string n = "  " + name;
 		n.resize(std::max<std::size_t>(n.size() + 1, 30), ' ');

@@ -42,6 +42,7 @@ TEST(Evaluate, LongIdenticalTrajectoriesScoreZeroEverywhere)
 	EXPECT_NEAR(std::stod(value(j, "kitti_t_err_pct")), 0, 1e-9);
 	EXPECT_NEAR(std::stod(value(j, "kitti_r_err_deg_per_m")), 0, 1e-7);
 	EXPECT_NEAR(std::stod(value(j, "sim3_scale")), 1, 1e-9);
+	EXPECT_NEAR(std::stod(value(j, "path_ratio")), 1, 1e-12);
 	EXPECT_EQ(value(j, "kitti_note"), "null");
 	const auto per_length = j.find("\"kitti_per_length\": [");
 	ASSERT_NE(per_length, std::string::npos);
@@ -182,4 +183,15 @@ TEST(Evaluate, GroundTruthOfAnotherDriveIsWarnedAbout)
 	EvalOptions sim3 = kDefaults;
 	sim3.align = Alignment::Sim3;
 	EXPECT_TRUE(evaluate(gt, scaled(gt, 0.1), sim3).warnings.empty());
+}
+
+// path_ratio: the estimate's path over the truth's; on the table's path line too.
+TEST(Evaluate, PathRatioIsTheEstimatesLengthOverTheTruths)
+{
+	const Trajectory gt = fromSteps(200, arcStep(1.0, 0.001));
+	Trajectory est = gt;
+	for (auto& p : est) p.pose.translation() *= 1.02;
+	const EvalReport r = evaluate(gt, est, kDefaults);
+	EXPECT_NEAR(std::stod(value(toJson(r), "path_ratio")), 1.02, 1e-9);
+	EXPECT_NE(formatTable(r).find("(ratio 1.0200)"), std::string::npos) << formatTable(r);
 }

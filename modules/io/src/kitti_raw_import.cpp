@@ -78,7 +78,7 @@ OxtsTruth oxtsGroundTruth(const KittiRawImport& opt, const std::vector<KittiFram
 	const Eigen::Isometry3d velo_T_imu = readKittiImuToVelo(imu_to_velo);
 	OxtsTruth truth{velodyneTrajectory(oxtsPoses(records), t, velo_T_imu), {}};
 	const auto dead_reckoned = oxtsDeadReckonedPoses(records, t);
-	if (dead_reckoned.empty()) summary.warnings.push_back(oxts + ": records without velocities, no " + velocityTruthPathFor(opt.out) + " written");
+	if (dead_reckoned.empty()) summary.warnings.push_back(oxts + ": records without velocities or with times that do not increase, no " + velocityTruthPathFor(opt.out) + " written");
 	else truth.velocities = velodyneTrajectory(dead_reckoned, t, velo_T_imu);
 	return truth;
 }

@@ -8,8 +8,10 @@
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/io/trajectory.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 
 using namespace vlo;
@@ -200,6 +202,52 @@ TEST(KittiRawBuilt, TimestampsOfEachSensorAreUsed)
 	expectInputError([&] { importKittiRaw(opt); }, {drive + "/image_01/data", "directory not found"});
 	opt.camera = 5;
 	expectInputError([&] { importKittiRaw(opt); }, {"--camera", "0, 1, 2 or 3"});
+}
+
+// oxts/ gives both truths: the positions' (X.gt.tum) and the velocities' (X.gt_velocity.tum); records
+// without velocities give the first and a warning.
+TEST(KittiRawBuilt, OxtsRecordsGiveThePositionsAndTheVelocitiesTruths)
+{
+	const std::string drive = freshDir(), raw = sharedData("kitti_raw_2011_09_26_sample");
+	fs::create_directories(drive + "/image_00/data");
+	fs::create_directories(drive + "/oxts/data");
+	std::ofstream(drive + "/image_00/timestamps.txt") << "2011-09-26 13:02:26.0\n2011-09-26 13:02:26.1\n2011-09-26 13:02:26.2\n";
+	std::ofstream(drive + "/oxts/timestamps.txt") << "2011-09-26 13:02:26.0\n2011-09-26 13:02:26.1\n2011-09-26 13:02:26.2\n";
+	// Due north at 10 m/s (vn = 10), level, facing north; the positions say 1.01 m a step.
+	const auto record = [&](int k, bool velocity) {
+		char name[16];
+		std::snprintf(name, sizeof(name), "%010d", k);
+		std::ofstream f(drive + "/oxts/data/" + name + ".txt");
+		f << std::setprecision(12) << 49.0 + k * 1.01 / 111200.0 << " 8.4 100 0 0 " << M_PI / 2;
+		if (velocity) f << " 10 0 10 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0.15 0.03 4 8 4 4 4";
+		f << "\n";
+	};
+	for (int k = 0; k < 3; ++k)
+	{
+		char name[16];
+		std::snprintf(name, sizeof(name), "%010d", k);
+		testFrame(k, 0, 1242, 375).image.saveToFile(drive + "/image_00/data/" + name + ".png");
+		record(k, true);
+	}
+	KittiRawImport opt;
+	opt.drive = drive, opt.calib = raw, opt.camera = 0, opt.out = drive + "/out.rawlog";
+	const auto summary = importKittiRaw(opt);
+	EXPECT_EQ(summary.ground_truth, drive + "/out.gt.tum");
+	ASSERT_EQ(summary.velocity_truth, drive + "/out.gt_velocity.tum");
+	const Trajectory pos = readTum(summary.ground_truth), vel = readTum(summary.velocity_truth);
+	ASSERT_EQ(vel.size(), 3u);
+	EXPECT_NEAR(pathLength(pos), 2.02, 0.02);
+	EXPECT_NEAR(pathLength(vel), 2.0, 1e-5);  // 10 m/s for 0.2 s, whatever frame it is drawn in
+	EXPECT_NEAR(vel[2].t - vel[0].t, 0.2, 1e-6);
+
+	record(1, false);  // a record cut after the orientation
+	fs::remove(summary.velocity_truth);
+	const auto without = importKittiRaw(opt);
+	EXPECT_TRUE(without.velocity_truth.empty());
+	EXPECT_FALSE(fs::exists(drive + "/out.gt_velocity.tum"));
+	EXPECT_EQ(readTum(without.ground_truth).size(), 3u);
+	ASSERT_FALSE(without.warnings.empty());
+	EXPECT_NE(without.warnings.back().find("records without velocities"), std::string::npos) << without.warnings.back();
 }
 
 // Issue 34, defect 3: a frame whose image is missing was dropped without a word (a missing scan warned),

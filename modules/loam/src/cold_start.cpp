@@ -11,17 +11,18 @@ namespace
 {
 constexpr double kInlierDistance = 0.1;  // [m] real KITTI residuals are 2-10 cm (doc/LOAM.md)
 constexpr double kAgreement = 0.05;  // [m] results this close are one answer
+
+/// The part of `v` across the line of `e`: the only part the line fixes.
+Eigen::Vector3d across(const EdgeMatch& e, const Eigen::Vector3d& v) { return v - e.u * e.u.dot(v); }
+bool inlier(const EdgeMatch& e, const Eigen::Isometry3d& T, double tolerance) { return across(e, T * e.p - e.a).norm() <= tolerance; }
+bool inlier(const PlaneMatch& p, const Eigen::Isometry3d& T, double tolerance) { return std::abs(p.n.dot(T * p.p) + p.d) <= tolerance; }
 }  // namespace
 
 int countInliers(const Matches& m, const Eigen::Isometry3d& T, double tolerance)
 {
 	int n = 0;
-	for (const EdgeMatch& e : m.edges)
-	{
-		const Eigen::Vector3d v = T * e.p - e.a;
-		n += (v - e.u * e.u.dot(v)).norm() <= tolerance;
-	}
-	for (const PlaneMatch& p : m.planes) n += std::abs(p.n.dot(T * p.p) + p.d) <= tolerance;
+	for (const EdgeMatch& e : m.edges) n += inlier(e, T, tolerance);
+	for (const PlaneMatch& p : m.planes) n += inlier(p, T, tolerance);
 	return n;
 }
 
@@ -29,12 +30,9 @@ double inliersAlong(const Matches& m, const Eigen::Isometry3d& T, double toleran
 {
 	double sum = 0;
 	for (const EdgeMatch& e : m.edges)
-	{
-		const Eigen::Vector3d v = T * e.p - e.a;
-		if ((v - e.u * e.u.dot(v)).norm() <= tolerance) sum += (d - e.u * e.u.dot(d)).squaredNorm();
-	}
+		if (inlier(e, T, tolerance)) sum += across(e, d).squaredNorm();
 	for (const PlaneMatch& p : m.planes)
-		if (std::abs(p.n.dot(T * p.p) + p.d) <= tolerance) sum += p.n.dot(d) * p.n.dot(d);
+		if (inlier(p, T, tolerance)) sum += p.n.dot(d) * p.n.dot(d);
 	return sum;
 }
 

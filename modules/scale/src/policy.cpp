@@ -13,9 +13,8 @@ constexpr std::size_t kEarlyMinEstimates = 5;
 /// A single estimate's scatter is at least this (the estimates of a few frames can agree by chance).
 constexpr double kMinSingleSpread = 0.01;
 
-double medianOf(const std::deque<double>& values)
+double medianOf(std::vector<double> v)
 {
-	std::vector<double> v(values.begin(), values.end());
 	std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
 	return v[v.size() / 2];
 }
@@ -24,7 +23,7 @@ double medianOf(const std::deque<double>& values)
 /// deviation (1.4826 MAD) and at least kMinSingleSpread.
 double medianError(const std::deque<double>& values, double median)
 {
-	std::deque<double> dev;
+	std::vector<double> dev;
 	for (double x : values) dev.push_back(std::abs(x - median));
 	const double sigma = std::max(kMinSingleSpread, 1.4826 * medianOf(dev));
 	return 1.2533 * sigma / std::sqrt(static_cast<double>(values.size()));
@@ -75,7 +74,7 @@ ScaleDecision ScaleCorrectionPolicy::decide(const ScaleEstimate& e)
 		recent_.push_back(e.scale);
 		if (recent_.size() > window_) recent_.pop_front();
 		const bool refining = !refined_ && refine_threshold_ > 0;
-		const double median = medianOf(recent_);
+		const double median = medianOf({recent_.begin(), recent_.end()});
 		if (recent_.size() < window_)
 		{
 			// The initial scale came from one frame pair: while the first window fills, correct as soon

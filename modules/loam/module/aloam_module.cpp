@@ -85,6 +85,7 @@ class AloamModule : public kernel::LidarOdometryModule
 		table.set("lo_odom_info_next", r.odometry.degeneracy.translation_information(1), 1);
 		// ... and edges = auto and the rounds of scan-to-map from this
 		table.set("lo_map_plane_info", r.mapping.plane_information, 1);
+		table.set("lo_map_rough", r.mapping.used_rough_planes);
 		if (!r.motion_prior.empty()) setMotionPriorColumns(r, table);
 		kernel::LidarOdometryStep step{mount_.vehiclePose(r.pose), std::nullopt};
 		if (r.status == LidarFrameStatus::Ok && r.mapping.ok)

@@ -86,7 +86,7 @@ bool flatAcross(const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& es, double
 // collinear, and around a corner they fit a level plane that is not there. So at least two
 // neighbours must come from other scan lines (A-LOAM's scan-to-scan planes likewise take a point
 // from another ring); on dense sensors they nearly always do.
-bool ScanToMap::fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMatch& out) const
+bool ScanToMap::fitPlane(const Eigen::Vector3f& q, double max_distance, Eigen::Vector3f* nn, PlaneMatch& out) const
 {
 	constexpr int kWide = 16;  // >= knn (options)
 	const int k = opt_.knn;
@@ -119,7 +119,7 @@ bool ScanToMap::fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMat
 	const Eigen::Vector3d normal = es.eigenvectors().col(0);
 	const double d = -normal.dot(c);
 	for (int i = 0; i < k; ++i)
-		if (std::abs(normal.dot(nn[i].cast<double>()) + d) > opt_.plane_max_distance) return false;
+		if (std::abs(normal.dot(nn[i].cast<double>()) + d) > max_distance) return false;
 	out.n = normal;
 	out.d = d;
 	return true;
@@ -195,16 +195,16 @@ void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Mat
 	}
 }
 
-void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, bool with_edges, Matches& out) const
+void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, MatchKinds kinds, Matches& out) const
 {
 	out.clear();
-	if (with_edges) findEdgeMatches(in, T, out);
+	if (kinds.edges) findEdgeMatches(in, T, out);
 	const Eigen::Matrix3f R = T.linear().cast<float>();
 	const Eigen::Vector3f t = T.translation().cast<float>();
 	Eigen::Vector3f nn[32];
 	PlaneMatch pm;
 	for (const Eigen::Vector3f& p : in.planes)
-		if (fitPlane(R * p + t, nn, pm))
+		if (fitPlane(R * p + t, kinds.rough_planes ? opt_.rough_plane_max_distance : opt_.plane_max_distance, nn, pm))
 		{
 			pm.p = p.cast<double>();
 			out.planes.push_back(pm);
@@ -223,7 +223,7 @@ double ScanToMap::translationInformation(
 double ScanToMap::planeFit(const Input& in, const Eigen::Isometry3d& T) const
 {
 	Matches m;
-	findMatches(in, T, false, m);
+	findMatches(in, T, {}, m);
 	const double c2 = opt_.solver.loss_scale * opt_.solver.loss_scale;
 	double sum = 0;
 	for (const PlaneMatch& p : m.planes)
@@ -241,15 +241,22 @@ bool ScanToMap::refine(const Input& in, Result& res, const PosePrior* prior) con
 	SolveReport rep;
 	// Round 0's plane matches at the guess decide, once per frame, whether lines are sought too
 	// (edges = auto: only where the planes leave the translation weak).
-	findMatches(in, T, false, m);
+	findMatches(in, T, {}, m);
 	res.plane_information = translationInformation({}, m.planes, T);
-	const bool with_edges = opt_.edges == "on" || (opt_.edges == "auto" && res.plane_information < opt_.weak_plane_information);
-	if (with_edges) findEdgeMatches(in, T, m);
-	res.used_edges = with_edges;
+	MatchKinds kinds;
+	kinds.edges = opt_.edges == "on" || (opt_.edges == "auto" && res.plane_information < opt_.weak_plane_information);
+	if (kinds.edges) findEdgeMatches(in, T, m);
+	// Where planes and lines leave the translation nearly free (a 16-beam scan among trees), rough
+	// planes (bumpy canopies, hedges) hold it; where the others fix it, they only add their bias.
+	kinds.rough_planes = opt_.rough_plane_max_distance > opt_.plane_max_distance &&
+		translationInformation(m.edges, m.planes, T) < opt_.rough_plane_information;
+	if (kinds.rough_planes) findMatches(in, T, kinds, m);
+	res.used_edges = kinds.edges;
+	res.used_rough_planes = kinds.rough_planes;
 	double last_step = std::numeric_limits<double>::infinity();
 	for (int round = 0; round < opt_.max_rounds; ++round)
 	{
-		if (round > 0) findMatches(in, T, with_edges, m);
+		if (round > 0) findMatches(in, T, kinds, m);
 		res.n_edges = static_cast<int>(m.edges.size());
 		res.n_planes = static_cast<int>(m.planes.size());
 		if (res.n_planes < opt_.min_plane_correspondences || res.n_edges < opt_.min_edge_correspondences)

@@ -116,6 +116,8 @@ void MappingOptions::declare(OptionTable& t)
 	t.add("outline_view_change_deg", outline_view_change_deg, "[0, 180]", "lines through outline points only from map points seen from within this angle of the current view [deg] (0: any view, A-LOAM)");
 	t.add("edge_range_ratio", edge_range_ratio, ">= 0", "lines are matched only against map points seen from within this factor of the edge point's range (0: any)");
 	t.add("plane_max_distance", plane_max_distance, "> 0", "plane if all neighbours are this close to it [m]");
+	t.add("rough_plane_max_distance", rough_plane_max_distance, ">= 0", "where planes and lines leave the translation nearly free, planes whose neighbours lie this close count too [m] (<= plane_max_distance: off)");
+	t.add("rough_plane_information", rough_plane_information, ">= 0", "... nearly free: its information along the weakest direction at the guess below this");
 	t.add("plane_line_ratio", plane_line_ratio, ">= 1", "no plane if largest eigenvalue > ratio * middle (one ring)");
 	t.add("min_edge_correspondences", min_edge_correspondences, ">= 0", "fewer edge matches: keep the odometry pose (0: edges optional)");
 	t.add("min_plane_correspondences", min_plane_correspondences, ">= 0", "fewer plane matches: keep the odometry pose");

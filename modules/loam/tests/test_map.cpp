@@ -85,7 +85,7 @@ TEST(Map, LinesThatDependOnTheViewAreMatchedOnlyFromNearby)
 		ScanToMap mapper(o);
 		mapper.insert(f, seen_from);
 		Matches m;
-		mapper.findMatches(probes, Eigen::Isometry3d::Identity(), true, m);
+		mapper.findMatches(probes, Eigen::Isometry3d::Identity(), {true, false}, m);
 		return m.edges.size();
 	};
 	EXPECT_EQ(matches(0, 53, 0), 3u);  // any reach, any view (A-LOAM)
@@ -128,7 +128,7 @@ TEST(Map, OutlinesAreFitFromViewsLikeTheCurrentOne)
 		probe.edges = {Eigen::Vector3f(0.0f, -10.0f, 0.1f)};
 		probe.edge_silhouette = {1};
 		Matches m;
-		mapper.findMatches(probe, Eigen::Isometry3d::Identity(), true, m);
+		mapper.findMatches(probe, Eigen::Isometry3d::Identity(), {true, false}, m);
 		return m.edges.empty() ? std::nan("") : m.edges[0].a.x();
 	};
 	EXPECT_NEAR(lineThrough(0), 0.05, 0.01);  // A-LOAM: the nearest points, another side of the body
@@ -159,7 +159,7 @@ TEST(Map, LinesAreMatchedOnlyToPointsSeenFromASimilarRange)
 		probe.edges = {Eigen::Vector3f(10.05f, 0.1f, 0.1f)};
 		probe.edge_silhouette = {0};
 		Matches m;
-		mapper.findMatches(probe, Eigen::Isometry3d::Identity(), true, m);
+		mapper.findMatches(probe, Eigen::Isometry3d::Identity(), {true, false}, m);
 		return m.edges.size();
 	};
 	EXPECT_EQ(matches(0, 1.1), 1u);  // seen from 10.0-10.1 m
@@ -198,7 +198,7 @@ TEST(Map, PointsStrewnOverASurfaceAreNoLine)
 		ScanToMap mapper(o);
 		mapper.insert(f, Eigen::Isometry3d::Identity());
 		Matches m;
-		mapper.findMatches(probes, Eigen::Isometry3d::Identity(), true, m);
+		mapper.findMatches(probes, Eigen::Isometry3d::Identity(), {true, false}, m);
 		return m.edges.size();
 	};
 	EXPECT_EQ(matches(0), 2u);  // A-LOAM: the wall's band is a line too

@@ -35,6 +35,7 @@ class ScanToMap
 		int iterations = 0;
 		int n_edges = 0, n_planes = 0;  ///< matches of the last round
 		bool used_edges = false;  ///< edge matches were sought (edges = on, or auto and the planes are weak)
+		bool used_rough_planes = false;  ///< rough planes were matched too (planes and lines leave the translation free)
 		double plane_information = 0;  ///< the planes' translation information at the guess
 		double rms = 0;  ///< distance RMS at the solution [m]
 		/// With a pose prior: how much it raised the matches' cost (geometryCostOfPrior) [m^2]
@@ -64,8 +65,13 @@ class ScanToMap
 	const VoxelMap& edgeMap() const { return edge_map_; }
 	const VoxelMap& planeMap() const { return plane_map_; }
 
+	/// Which matches a round seeks besides the planes: lines, and planes up to rough_plane_max_distance.
+	struct MatchKinds
+	{
+		bool edges = false, rough_planes = false;
+	};
 	/// One round's matches for `in` at pose T.
-	void findMatches(const Input& in, const Eigen::Isometry3d& T, bool with_edges, Matches& out) const;
+	void findMatches(const Input& in, const Eigen::Isometry3d& T, MatchKinds kinds, Matches& out) const;
 	/// How well the scan's plane points at pose T fit the map's planes: the sum of their weights
 	/// under the robust loss (1 for a point on its plane, less the farther it lies).
 	double planeFit(const Input& in, const Eigen::Isometry3d& T) const;
@@ -93,7 +99,8 @@ class ScanToMap
 	/// `in` without the points that lie, at pose T, in the previous scan's free space: something
 	/// moved there (they go to res.arrived).
 	Input withoutArrivals(const Input& in, const Eigen::Isometry3d& T, Result& res) const;
-	bool fitPlane(const Eigen::Vector3f& q, Eigen::Vector3f* nn, PlaneMatch& out) const;
+	/// A plane through the nearest map points of q, all within max_distance of it.
+	bool fitPlane(const Eigen::Vector3f& q, double max_distance, Eigen::Vector3f* nn, PlaneMatch& out) const;
 
 	MappingOptions opt_;
 	VoxelMap edge_map_, plane_map_;

@@ -148,6 +148,13 @@ struct MappingOptions : public OptionSet
 	/// within this factor of the edge point's own range (0: any; doc/LOAM.md "Known limits").
 	double edge_range_ratio = 0.0;
 	double plane_max_distance = 0.05;  ///< plane if every neighbour is this close to it [m]
+	/// Where the planes and lines at the guess leave the translation nearly free (its information
+	/// along the weakest direction, as weak_plane_information, below rough_plane_information), planes
+	/// whose neighbours lie up to rough_plane_max_distance off them count too (A-LOAM: 0.2 m
+	/// everywhere): among trees a 16-beam scan's only other surfaces are canopies and hedges
+	/// (doc/LOAM.md step 4). <= plane_max_distance: off.
+	double rough_plane_max_distance = 0.25;
+	double rough_plane_information = 3.0;
 	double plane_line_ratio = 10.0;  ///< not a plane if largest eigenvalue > ratio * middle (a line)
 	int min_edge_correspondences = 0, min_plane_correspondences = 50;  ///< fewer: keep the odometry pose (edges are optional: some scenes have none)
 	double degeneracy_threshold = 10.0;  ///< min eigenvalue of J^T J below: degenerate

@@ -195,20 +195,25 @@ void ScanToMap::findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Mat
 	}
 }
 
-void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, MatchKinds kinds, Matches& out) const
+void ScanToMap::findPlaneMatches(const Input& in, const Eigen::Isometry3d& T, double max_distance, Matches& out) const
 {
-	out.clear();
-	if (kinds.edges) findEdgeMatches(in, T, out);
 	const Eigen::Matrix3f R = T.linear().cast<float>();
 	const Eigen::Vector3f t = T.translation().cast<float>();
 	Eigen::Vector3f nn[32];
 	PlaneMatch pm;
 	for (const Eigen::Vector3f& p : in.planes)
-		if (fitPlane(R * p + t, kinds.rough_planes ? opt_.rough_plane_max_distance : opt_.plane_max_distance, nn, pm))
+		if (fitPlane(R * p + t, max_distance, nn, pm))
 		{
 			pm.p = p.cast<double>();
 			out.planes.push_back(pm);
 		}
+}
+
+void ScanToMap::findMatches(const Input& in, const Eigen::Isometry3d& T, MatchKinds kinds, Matches& out) const
+{
+	out.clear();
+	if (kinds.edges) findEdgeMatches(in, T, out);
+	findPlaneMatches(in, T, kinds.rough_planes ? opt_.rough_plane_max_distance : opt_.plane_max_distance, out);
 }
 
 double ScanToMap::translationInformation(
@@ -250,7 +255,11 @@ bool ScanToMap::refine(const Input& in, Result& res, const PosePrior* prior) con
 	// planes (bumpy canopies, hedges) hold it; where the others fix it, they only add their bias.
 	kinds.rough_planes = opt_.rough_plane_max_distance > opt_.plane_max_distance &&
 		translationInformation(m.edges, m.planes, T) < opt_.rough_plane_information;
-	if (kinds.rough_planes) findMatches(in, T, kinds, m);
+	if (kinds.rough_planes)
+	{
+		m.planes.clear();
+		findPlaneMatches(in, T, opt_.rough_plane_max_distance, m);
+	}
 	res.used_edges = kinds.edges;
 	res.used_rough_planes = kinds.rough_planes;
 	double last_step = std::numeric_limits<double>::infinity();

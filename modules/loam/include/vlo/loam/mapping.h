@@ -89,6 +89,8 @@ class ScanToMap
 	bool seenFromOtherRange(const Eigen::Vector3f& p, const Eigen::Vector3f* nn, const std::uint32_t* tags, int k) const;
 	/// Appends the line matches of `in` at pose T to out.edges.
 	void findEdgeMatches(const Input& in, const Eigen::Isometry3d& T, Matches& out) const;
+	/// Appends the plane matches of `in` at pose T (neighbours within max_distance of their plane) to out.planes.
+	void findPlaneMatches(const Input& in, const Eigen::Isometry3d& T, double max_distance, Matches& out) const;
 	/// Information on the translation along its weakest direction of these matches at T (robust-weighted
 	/// J^T J, rotation marginalised).
 	double translationInformation(const std::vector<EdgeMatch>& edges, const std::vector<PlaneMatch>& planes,

@@ -65,7 +65,8 @@ class ScanToMap
 	const VoxelMap& edgeMap() const { return edge_map_; }
 	const VoxelMap& planeMap() const { return plane_map_; }
 
-	/// Which matches a round seeks besides the planes: lines, and planes up to rough_plane_max_distance.
+	/// What a round matches besides the planes: lines; and whether the planes may be rough (up to
+	/// rough_plane_max_distance off their neighbours rather than plane_max_distance).
 	struct MatchKinds
 	{
 		bool edges = false, rough_planes = false;

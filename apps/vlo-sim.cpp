@@ -13,7 +13,7 @@ int main(int argc, char** argv)
 {
 	return vlo::runApp("vlo-sim", [&] {
 		const vlo::CommandLine cl = vlo::parseAppCommandLine(argc, argv, 1,
-			{{"scenario", "NAME", "urban | trees | corridor | loop | facades | avenue (default urban)"},
+			{{"scenario", "NAME", "urban | trees | corridor | loop | facades | avenue | residential (default urban)"},
 				{"lidar", "MODEL", "hdl64 | vlp16 (default hdl64)"},
 				{"frames", "N", "number of 10 Hz frames (default 100)"},
 				{"seed", "S", "world, drive and noise seed (default 1)"},

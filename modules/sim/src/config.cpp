@@ -18,7 +18,9 @@ Scenario parseScenario(const std::string& name)
 	if (name == "loop") return Scenario::Loop;
 	if (name == "facades") return Scenario::Facades;
 	if (name == "avenue") return Scenario::Avenue;
-	failInput("--scenario", "unknown scenario '" + name + "' (urban, trees, corridor, loop, facades or avenue)");
+	if (name == "residential") return Scenario::Residential;
+	failInput(
+		"--scenario", "unknown scenario '" + name + "' (urban, trees, corridor, loop, facades, avenue or residential)");
 }
 
 std::string scenarioName(Scenario s)
@@ -31,6 +33,7 @@ std::string scenarioName(Scenario s)
 		case Scenario::Loop: return "loop";
 		case Scenario::Facades: return "facades";
 		case Scenario::Avenue: return "avenue";
+		case Scenario::Residential: return "residential";
 	}
 	return "?";
 }

@@ -51,6 +51,10 @@ class Placer
 };
 
 void buildUrbanSide(Placer& p, double side, double s0, double s1, double skip_from, double skip_to);
+/// Cars parked in the parking lane, and lamps and trees on the sidewalk, outside [skip_from, skip_to).
+void streetParking(Placer& p, double side, double s0, double s1, double skip_from, double skip_to);
+void streetLampsAndTrees(Placer& p, double side, double s0, double s1, double skip_from, double skip_to);
+void buildResidentialSide(Placer& p, double side, double s0, double s1);
 void buildCorridorWalls(Placer& p, double s0, double s1);
 /// Trees along one side of the road: the first within `first` m of s0, then every gap[0]-gap[1] m,
 /// off[0]-off[1] m beyond the clearance, trunks needing a free footprint, sizes size[0]-size[1].

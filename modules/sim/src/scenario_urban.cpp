@@ -1,4 +1,5 @@
-// Urban roadsides: rows of buildings with gaps (garden walls, trees), parked cars, street lamps.
+// Urban roadsides: rows of buildings with gaps (garden walls, trees), parked cars, street lamps
+// (the street's parking and lamps also line the residential scenario).
 // Also the corridor's walls.
 #include "placer.h"
 
@@ -57,7 +58,9 @@ void buildings(Placer& p, double side, double s0, double s1, double skip_from, d
 	}
 }
 
-void parkedCars(Placer& p, double side, double s0, double s1, double skip_from, double skip_to)
+}  // namespace
+
+void streetParking(Placer& p, double side, double s0, double s1, double skip_from, double skip_to)
 {
 	const double lat = side * (p.cs.lane + p.cs.half_width) / 2;
 	for (double s = s0 + p.rng.uniform(0, 6); s < s1; s += p.rng.uniform(5.5, 7.5))
@@ -72,7 +75,7 @@ void parkedCars(Placer& p, double side, double s0, double s1, double skip_from, 
 	}
 }
 
-void lampsAndTrees(Placer& p, double side, double s0, double s1, double skip_from, double skip_to)
+void streetLampsAndTrees(Placer& p, double side, double s0, double s1, double skip_from, double skip_to)
 {
 	const double hw = p.cs.half_width;
 	for (double s = s0 + p.rng.uniform(0, 20); s < s1; s += p.rng.uniform(22, 38))
@@ -96,13 +99,11 @@ void lampsAndTrees(Placer& p, double side, double s0, double s1, double skip_fro
 		p.occupy(f, 1.2, 1.2);
 	}
 }
-}  // namespace
-
 void buildUrbanSide(Placer& p, double side, double s0, double s1, double skip_from, double skip_to)
 {
 	buildings(p, side, s0, s1, skip_from, skip_to);
-	parkedCars(p, side, s0, s1, skip_from, skip_to);
-	lampsAndTrees(p, side, s0, s1, skip_from, skip_to);
+	streetParking(p, side, s0, s1, skip_from, skip_to);
+	streetLampsAndTrees(p, side, s0, s1, skip_from, skip_to);
 }
 
 void buildCorridorWalls(Placer& p, double s0, double s1)

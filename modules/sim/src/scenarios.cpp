@@ -107,6 +107,8 @@ World buildWorld(const WorldSpec& spec, const Road& road)
 				buildTreesSide(p, side, 0, L);
 			else if (spec.scenario == Scenario::Avenue)
 				buildAvenueSide(p, side, 0, L);
+			else if (spec.scenario == Scenario::Residential)
+				buildResidentialSide(p, side, 0, L);
 			else if (spec.scenario == Scenario::Corridor)
 				buildUrbanSide(p, side, 0, L, spec.corridor_from, spec.corridor_to);
 			else

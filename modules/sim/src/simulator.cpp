@@ -111,7 +111,8 @@ Drive generatedDrive(const SimConfig& cfg)
 	DriveStyle ds;
 	if (cfg.scenario == Scenario::Corridor) ds.v_min = 8, ds.v_max = 12;
 	if (cfg.scenario == Scenario::Trees) ds.v_min = 7;
-	if (cfg.scenario == Scenario::Avenue) ds.v_min = 11, ds.v_max = 13;  // KITTI raw 2011_09_26_0013's speeds
+	if (cfg.scenario == Scenario::Avenue || cfg.scenario == Scenario::Residential)
+		ds.v_min = 11, ds.v_max = 13;  // KITTI raw 2011_09_26_0013's speeds
 	const double dist = plannedDistance(ds, duration, cfg.seed);
 	RoadStyle st = styleFor(cfg.scenario);
 	if (cfg.scenario == Scenario::Corridor)

@@ -16,9 +16,10 @@ enum class Scenario
 	Corridor,  ///< urban, then a long straight between smooth textured walls, then urban again
 	Loop,  ///< a 504 m city-block circuit driven lap after lap, turning around to drive it back (circuit.h)
 	Facades,  ///< a straight street of identical units (facade, lamp, car, tree) every facade_period metres
-	Avenue  ///< a gentle road at 11-13 m/s between dense trees and bushes right beside it (a KITTI raw tree stretch)
+	Avenue,  ///< a gentle road at 11-13 m/s between dense trees and bushes right beside it (a KITTI raw tree stretch)
+	Residential  ///< 11-13 m/s past front yards (hedges, fences, bushes, driveways) and detached houses (KITTI raw 0013)
 };
-/// "urban" | "trees" | "corridor" | "loop" | "facades" | "avenue"; InputError otherwise.
+/// "urban" | "trees" | "corridor" | "loop" | "facades" | "avenue" | "residential"; InputError otherwise.
 Scenario parseScenario(const std::string& name);
 std::string scenarioName(Scenario s);
 

@@ -157,7 +157,8 @@ void PriorOptions::declare(OptionTable& t)
 	t.add("check_deviation_deg", check_deviation_deg, ">= 0", "... or turning this differently [deg]");
 	t.add("check_margin", check_margin, ">= 0", "... better by this fraction of the external motion's fit");
 	t.add("motion_sigma", motion_sigma, ">= 0", "the external motion is a residual of scan-to-map's solve with this translation standard deviation per frame and axis at full quality (0: off, it only starts the registration) [m]");
-	t.add("motion_sigma_deg", motion_sigma_deg, "> 0", "... and this rotation standard deviation [deg]");
+	t.add("motion_sigma_deg", motion_sigma_deg, "> 0", "... this roll and pitch standard deviation [deg]");
+	t.add("motion_sigma_yaw_deg", motion_sigma_yaw_deg, "> 0", "... and this yaw (about the LiDAR's vertical axis) standard deviation [deg]");
 	t.add("full_quality_tracked", full_quality_tracked, ">= 0", "... fewer features tracked by the motion's source scale the variances by this / tracked");
 	t.add("max_geometry_cost", max_geometry_cost, ">= 0", "where the prior raises the matches' cost by more than this many squared [loam.mapping] loss_scale, scan-to-map is solved again without it");
 }

@@ -40,7 +40,6 @@ PosePrior externalMotionPrior(const Eigen::Isometry3d& previous_pose, const Eige
 	const double tracked = std::isfinite(quality.tracked) ? std::max(quality.tracked, 1.0) : o.full_quality_tracked;
 	const double inflate = std::max(1.0, o.full_quality_tracked / tracked);
 	const double sigma2 = o.motion_sigma * o.motion_sigma * inflate;
-	const double rot_sigma = o.motion_sigma_deg * kRadPerDeg;
 	const double m2 = match_sigma * match_sigma;
 	Eigen::Matrix3d cov_t = sigma2 * Eigen::Matrix3d::Identity();
 	const double length = motion.translation().norm();
@@ -49,8 +48,9 @@ PosePrior externalMotionPrior(const Eigen::Isometry3d& previous_pose, const Eige
 		const Eigen::Vector3d u = motion.translation() / length;
 		cov_t += std::pow(length * quality.length_error, 2) * u * u.transpose();
 	}
-	return posePriorInScanAxes(previous_pose * motion, m2 / (rot_sigma * rot_sigma * inflate) * Eigen::Matrix3d::Identity(),
-		m2 * cov_t.inverse());
+	const double tilt = o.motion_sigma_deg * kRadPerDeg, yaw = o.motion_sigma_yaw_deg * kRadPerDeg;
+	const Eigen::Vector3d rot_info(m2 / (tilt * tilt * inflate), m2 / (tilt * tilt * inflate), m2 / (yaw * yaw * inflate));
+	return posePriorInScanAxes(previous_pose * motion, rot_info.asDiagonal(), m2 * cov_t.inverse());
 }
 
 double geometryCostOfPrior(const PosePrior& prior, const Matrix6d& matches_JtJ, const Eigen::Isometry3d& T)

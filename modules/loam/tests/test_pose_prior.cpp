@@ -117,8 +117,13 @@ TEST(PosePrior, InformationFollowsTheSourcesQuality)
 	EXPECT_NEAR(l(4, 4), 4.0, 1e-9);
 	// Turned into the map's axes: the previous pose turned by 90 deg swaps x and y.
 	const Matrix6d turned = externalMotionPrior(planarPose(0, 0, 90), motion, {100, 0.01}, o, 0.02).information;
-	// The rotation: 0.005 deg against matches of 0.02 m, 5.25e6 matches' worth per radian^2.
+	// Roll and pitch: 0.005 deg against matches of 0.02 m, 5.25e6 matches' worth per radian^2; yaw 0.05 deg,
+	// a hundredth of that, about the scan's z axis (the map's z after any turn about it).
 	EXPECT_NEAR(l(0, 0), std::pow(0.02 / (0.005 * M_PI / 180), 2), 1.0);
+	EXPECT_NEAR(l(1, 1), l(0, 0), 1e-6);
+	EXPECT_NEAR(l(2, 2), std::pow(0.02 / (0.05 * M_PI / 180), 2), 1e-2);
+	EXPECT_NEAR(turned(2, 2), l(2, 2), 1e-6);
+	EXPECT_NEAR(turned(0, 0), l(0, 0), 1e-6);
 	EXPECT_NEAR(turned(4, 4), 2.0, 1e-9);
 	EXPECT_NEAR(turned(3, 3), 4.0, 1e-9);
 }

@@ -210,7 +210,11 @@ struct PriorOptions : public OptionSet
 	/// when the source tracked full_quality_tracked features (0: off, it only starts the registration;
 	/// ini/vlp16.ini and ini/sim-hdl64.ini: 0.02) [m] ...
 	double motion_sigma = 0;
-	double motion_sigma_deg = 0.005;  ///< ... and of its rotation [deg]
+	double motion_sigma_deg = 0.005;  ///< ... of its roll and pitch [deg]
+	/// ... and of its yaw, about the LiDAR's vertical axis [deg]: looser, as the VO's yaw scatters by
+	/// about this much a frame, and a LiDAR's heading does not drift with its lasers' elevation errors
+	/// the way its roll and pitch do (ground matches tilted alike).
+	double motion_sigma_yaw_deg = 0.05;
 	/// ... fewer tracked features scale its variances up by full_quality_tracked / tracked, and the
 	/// source's relative error of the motion's length (a scale corrector's) adds along it. A line or
 	/// plane match counts with the standard deviation [loam.mapping] loss_scale.

@@ -34,7 +34,8 @@ struct ExternalMotionQuality
 };
 
 /// The prior of an external motion (the pose of this LiDAR frame in the previous one) from the
-/// previous frame's map pose: [loam.prior] motion_sigma, motion_sigma_deg per axis, the variances
+/// previous frame's map pose: [loam.prior] motion_sigma per axis, motion_sigma_deg for roll and pitch,
+/// motion_sigma_yaw_deg about the scan's z axis, the variances
 /// scaled up where fewer than full_quality_tracked features were tracked, plus (length x
 /// length_error)^2 along the motion; in the units of matches of standard deviation `match_sigma`
 /// (match_sigma^2 / variance).

@@ -12,7 +12,7 @@
 #include <vlo/io/rawlog_reader.h>
 #include <vlo/io/trajectory.h>
 #include <vlo/loop/loop_closure.h>
-#include <vlo/pipeline/point_times.h>
+#include <vlo/pipeline/lidar_options.h>
 
 #include <algorithm>
 #include <chrono>
@@ -47,7 +47,7 @@ int main(int argc, char** argv)
 	double add_ms = 0, max_add = 0;
 	while (reader.next(f) && i < truth.size())
 	{
-		if (times) pipeline::applyPointTimes(f.scan, pipeline::PointTimeOptions{});
+		if (times) pipeline::applyLidarOptions(f.scan, pipeline::LidarOptions{});
 		const auto t0 = std::chrono::steady_clock::now();
 		lc.addFrame(static_cast<long long>(i), f.t, odo[i].pose, std::nullopt, f.scan, f.rig.vehicle_T_lidar);
 		const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -9,7 +9,7 @@
 #include <vlo/kernel/visual_odometry.h>
 #include <vlo/loop/options.h>
 #include <vlo/pipeline/pipeline_options.h>
-#include <vlo/pipeline/point_times.h>
+#include <vlo/pipeline/lidar_options.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -31,7 +31,7 @@ kernel::RunConfig loadEverySection()
 	auto config = kernel::RunConfig::fromString("", "none.ini");
 	pipeline::PipelineOptions pipeline;
 	config.load(pipeline, "pipeline");
-	pipeline::PointTimeOptions times;
+	pipeline::LidarOptions times;
 	config.load(times, "lidar");
 	loop::LoopOptions loop;
 	config.load(loop, "loop");

@@ -22,19 +22,18 @@ struct FrameInFlight : ReadFrame
 };
 }  // namespace
 
-void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const PointTimeOptions& times,
+void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const LidarOptions& lidar,
 	const RunPlan& plan, RunOutputs& outputs, GlobalMap& map, ProgressLine& progress)
 {
 	io::ImageUndistorter undistorter;  // the camera's estimators and snapshots see ideal pinhole images
 	const bool threaded = popt.threadCount() >= 2;
-	// The LiDAR odometry's work on a frame alone (LOAM's features) runs where the frame is read:
-	// with two threads beside both stages, which leaves the stages more even.
-	const auto prepare = [&stages, &times](Frame& f) {
-		applyPointTimes(f.scan, times);
-		return stages.lidar->prepare(f);
+	// The [lidar] corrections, and the LiDAR odometry's work on a frame alone (LOAM's features), run
+	// where the frame is read: with two threads beside both stages, which leaves the stages more even.
+	const auto prepare = [&stages, &lidar](Frame& f) {
+		applyLidarOptions(f.scan, lidar);
+		return stages.lidar ? stages.lidar->prepare(f) : std::unique_ptr<kernel::PreparedScan>();
 	};
-	FramePrefetcher frames(reader, threaded ? 2 : 0, std::size_t(popt.max_frames),
-		stages.lidar ? FramePrefetcher::Prepare(prepare) : nullptr);
+	FramePrefetcher frames(reader, threaded ? 2 : 0, std::size_t(popt.max_frames), prepare);
 
 	// Each frame's motion source, then its LiDAR odometry and its row of the table. With two threads
 	// the LiDAR odometry runs on the worker, up to kAhead frames behind the motion source: the

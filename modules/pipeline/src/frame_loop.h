@@ -9,7 +9,7 @@
 #include <vlo/loop/loop_closure.h>
 #include <vlo/pipeline/global_map.h>
 #include <vlo/pipeline/pipeline_options.h>
-#include <vlo/pipeline/point_times.h>
+#include <vlo/pipeline/lidar_options.h>
 #include <vlo/pipeline/run_outputs.h>
 
 #include <memory>
@@ -39,6 +39,6 @@ struct Stages
 /// the same order). Returns once every
 /// thread it started has ended, also when it throws: InputEndedEarly when reading fails, Interrupted
 /// after a frame's row on Ctrl-C, with the rows of the frames before complete.
-void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const PointTimeOptions& times,
+void runFrames(io::RawlogReader& reader, const Stages& stages, const PipelineOptions& popt, const LidarOptions& lidar,
 	const RunPlan& plan, RunOutputs& outputs, GlobalMap& map, ProgressLine& progress);
 }  // namespace vlo::pipeline

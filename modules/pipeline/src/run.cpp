@@ -130,8 +130,8 @@ RunSummary runPipeline(const RunRequest& req)
 	auto config = kernel::RunConfig::fromFile(req.ini, req.overrides);
 	PipelineOptions popt;
 	config.load(popt, "pipeline");
-	PointTimeOptions times;
-	config.load(times, "lidar");
+	LidarOptions lidar;
+	config.load(lidar, "lidar");
 	const RunPlan plan = popt.plan();
 	Stages stages = makeStages(popt, plan, config);
 	logger().logFmt(mrpt::system::LVL_DEBUG, "mode %s: motion source '%s', LiDAR odometry '%s'", plan.name.c_str(),
@@ -160,7 +160,7 @@ RunSummary runPipeline(const RunRequest& req)
 	std::string stopReason;
 	try
 	{
-		pipeline::runFrames(reader, stages, popt, times, plan, outputs, globalMap, progress);
+		pipeline::runFrames(reader, stages, popt, lidar, plan, outputs, globalMap, progress);
 	}
 	catch (const Interrupted&)
 	{

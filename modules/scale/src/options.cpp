@@ -18,7 +18,6 @@ void ScaleOptions::declare(OptionTable& t)
 	t.add("min_depth", min_depth, "> 0", "[m] LiDAR points nearer than this (camera z) are not projected");
 	t.add("max_depth", max_depth, ">= 0", "[m] nor farther than this (0 = no limit)");
 	t.add("border", border, ">= 4", "[px] image margin without keypoints (>= 4)");
-	t.add("lidar_elevation_offset_deg", lidar_elevation_offset_deg, "[-2, 2]", "[deg] added to every LiDAR ray's elevation (KITTI's HDL-64: 0.22)");
 	std::vector<std::pair<std::string, KeypointTest>> tests;
 	for (auto k : {KeypointTest::Fast9, KeypointTest::Fast12Pretest, KeypointTest::None}) tests.emplace_back(toString(k), k);
 	t.choice("keypoint_test", keypoint_test, tests,

@@ -4,7 +4,6 @@
 #include <vlo/scale/keypoint_tests.h>
 #include <vlo/scale/projection.h>
 #include <vlo/scale/ransac.h>
-#include <vlo/scale/elevation_offset.h>
 #include <vlo/scale/scale_corrector.h>
 #include <vlo/scale/selection.h>
 #include <vlo/scale/tracking.h>
@@ -73,10 +72,7 @@ ScaleEstimate ScaleCorrector::estimate(const cv::Mat& prevIn, const PointCloud& 
 	const size_t minN = static_cast<size_t>(opt_.min_inliers);
 
 	// Eq. 1: project L(i-1) into C(i-1).
-	PointCloud raised;
-	if (opt_.lidar_elevation_offset_deg != 0) raised = raiseElevations(prevScan, opt_.lidar_elevation_offset_deg);
-	const PointCloud& scan = opt_.lidar_elevation_offset_deg != 0 ? raised : prevScan;
-	const auto projected = projectScan(scan, cam, camera_T_lidar, opt_.min_depth, opt_.max_depth, opt_.border);
+	const auto projected = projectScan(prevScan, cam, camera_T_lidar, opt_.min_depth, opt_.max_depth, opt_.border);
 	e.counts.projected = static_cast<int>(projected.size());
 	e.ms.add("project", lapMs(t0));
 	if (projected.size() < minN) return finish(Reason::FewProjected);

@@ -20,8 +20,6 @@ struct ScaleOptions : public OptionSet
 	double min_depth = 1.0;  ///< [m] along the optical axis; nearer points are ignored
 	double max_depth = 80.0;  ///< [m]; farther points have too little parallax (0 = no limit)
 	int border = 8;  ///< [px] margin kept free at the image edges (>= 4: the FAST circle fits)
-	/// [deg] added to every LiDAR ray's elevation before projecting (elevation_offset.h); KITTI: 0.22.
-	double lidar_elevation_offset_deg = 0.0;
 
 	// Keypoint selection among projected pixels.
 	KeypointTest keypoint_test = KeypointTest::Fast9;

@@ -1,10 +1,12 @@
-#include <vlo/pipeline/point_times.h>
+#include <vlo/pipeline/lidar_options.h>
+
+#include <vlo/core/elevation_offset.h>
 
 #include <cmath>
 
 namespace vlo::pipeline
 {
-void PointTimeOptions::declare(OptionTable& t)
+void LidarOptions::declare(OptionTable& t)
 {
 	t.choice("point_times", point_times,
 		{{"auto", PointTimes::Auto}, {"sensor", PointTimes::Sensor}, {"azimuth", PointTimes::Azimuth}, {"none", PointTimes::None}},
@@ -13,9 +15,11 @@ void PointTimeOptions::declare(OptionTable& t)
 	t.add("scan_period", scan_period, "> 0", "[s] per turn of the laser (times from the azimuth)");
 	t.add("frame_azimuth_deg", frame_azimuth_deg, "[-180, 180]",
 		"[deg] where the laser faces at the frame's time, half-way through its turn (0: forward, KITTI)");
+	t.add("elevation_offset_deg", elevation_offset_deg, "[-2, 2]",
+		"[deg] added to every ray's elevation: a calibration error common to the lasers (KITTI's HDL-64: 0.22)");
 }
 
-SpinningSweep PointTimeOptions::sweep() const
+SpinningSweep LidarOptions::sweep() const
 {
 	SpinningSweep s;
 	s.clockwise = clockwise;
@@ -25,8 +29,9 @@ SpinningSweep PointTimeOptions::sweep() const
 	return s;
 }
 
-void applyPointTimes(PointCloud& scan, const PointTimeOptions& options)
+void applyLidarOptions(PointCloud& scan, const LidarOptions& options)
 {
+	if (options.elevation_offset_deg != 0) scan = raiseElevations(scan, options.elevation_offset_deg);
 	switch (options.point_times)
 	{
 		case PointTimes::Sensor: return;

@@ -1,7 +1,9 @@
 #pragma once
-// The [lidar] section: when each return of a sweep was taken, for every LiDAR odometry alike. A
-// spinning LiDAR moves while it turns; the LiDAR odometries undistort ("deskew") a scan whose points
-// carry times, and take a scan without times as taken at one instant.
+// The [lidar] section: what every consumer of a scan (the LiDAR odometries, the scale corrector, the
+// map) needs to know of the sensor beyond its pose. When each return of a sweep was taken: a spinning
+// LiDAR moves while it turns; the LiDAR odometries undistort ("deskew") a scan whose points carry
+// times, and take a scan without times as taken at one instant. And an elevation error common to its
+// lasers (core/elevation_offset.h).
 #include <vlo/core/frame.h>
 #include <vlo/core/option_table.h>
 #include <vlo/core/sweep_times.h>
@@ -18,7 +20,7 @@ enum class PointTimes
 	None  ///< no times: no scan is deskewed (motion-compensated recordings)
 };
 
-struct PointTimeOptions : public OptionSet
+struct LidarOptions : public OptionSet
 {
 	PointTimes point_times = PointTimes::Auto;
 	bool clockwise = true;  ///< the laser turns clockwise seen from above (Velodyne)
@@ -26,6 +28,9 @@ struct PointTimeOptions : public OptionSet
 	/// [deg] where the laser faces at the frame's time, half-way through its turn (KITTI: forward,
 	/// where it triggers the cameras)
 	double frame_azimuth_deg = 0.0;
+	/// [deg] added to every ray's elevation, a calibration error common to the lasers (KITTI's HDL-64:
+	/// 0.22, IMLS-SLAM)
+	double elevation_offset_deg = 0.0;
 
 	SpinningSweep sweep() const;
 
@@ -33,8 +38,9 @@ struct PointTimeOptions : public OptionSet
 	void declare(OptionTable& t) override;
 };
 
-/// Gives the scan the times `options` asks for (or takes them away).
-void applyPointTimes(PointCloud& scan, const PointTimeOptions& options);
+/// Raises the scan's rays by the elevation offset, then gives it the times `options` asks for (or takes
+/// them away).
+void applyLidarOptions(PointCloud& scan, const LidarOptions& options);
 /// "sensor", "azimuth" or "none": where the scan's times came from, for frames.csv.
 const char* pointTimeSource(const PointCloud& scan);
 }  // namespace vlo::pipeline

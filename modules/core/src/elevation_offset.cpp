@@ -1,8 +1,8 @@
-#include <vlo/scale/elevation_offset.h>
+#include <vlo/core/elevation_offset.h>
 
 #include <cmath>
 
-namespace vlo::scale
+namespace vlo
 {
 PointCloud raiseElevations(const PointCloud& scan, double offset_deg)
 {
@@ -21,4 +21,4 @@ PointCloud raiseElevations(const PointCloud& scan, double offset_deg)
 	}
 	return out;
 }
-}  // namespace vlo::scale
+}  // namespace vlo

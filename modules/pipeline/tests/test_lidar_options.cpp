@@ -1,6 +1,8 @@
-// [lidar] point_times: which times each scan carries into the LiDAR odometry.
+// [lidar]: which times each scan carries into the LiDAR odometry, and its rays' elevation offset.
 #include <gtest/gtest.h>
-#include <vlo/pipeline/point_times.h>
+#include <vlo/pipeline/lidar_options.h>
+
+#include <cmath>
 
 namespace vlo::test
 {
@@ -17,10 +19,10 @@ PointCloud leftAndForward(bool sensor_times)
 
 PointCloud applied(pipeline::PointTimes mode, bool sensor_times)
 {
-	pipeline::PointTimeOptions o;
+	pipeline::LidarOptions o;
 	o.point_times = mode;
 	PointCloud scan = leftAndForward(sensor_times);
-	pipeline::applyPointTimes(scan, o);
+	pipeline::applyLidarOptions(scan, o);
 	return scan;
 }
 }  // namespace
@@ -48,7 +50,7 @@ TEST(PointTimes, EachOtherModeDoesWhatItSays)
 
 TEST(PointTimes, OptionsGiveTheSweep)
 {
-	pipeline::PointTimeOptions o;
+	pipeline::LidarOptions o;
 	o.clockwise = false;
 	o.scan_period = 0.05;
 	o.frame_azimuth_deg = 90;
@@ -57,5 +59,21 @@ TEST(PointTimes, OptionsGiveTheSweep)
 	EXPECT_DOUBLE_EQ(s.period, 0.05);
 	EXPECT_NEAR(s.timeAt(M_PI / 2), 0.0, 1e-15);
 	EXPECT_NEAR(s.timeAt(M_PI), 0.0125, 1e-15);  // counterclockwise: a quarter turn after
+}
+
+
+TEST(LidarOptions, TheElevationOffsetRaisesEveryRayBeforeTheTimes)
+{
+	pipeline::LidarOptions o;
+	o.elevation_offset_deg = 1.0;
+	PointCloud scan = leftAndForward(false);
+	scan[1].z = -1.0f;  // the ground ahead, 11.3 deg down
+	pipeline::applyLidarOptions(scan, o);
+	const double e = std::atan2(-1.0, 5.0) + M_PI / 180;
+	EXPECT_NEAR(scan[1].x, std::hypot(5.0, 1.0) * std::cos(e), 1e-5);
+	EXPECT_NEAR(scan[1].z, std::hypot(5.0, 1.0) * std::sin(e), 1e-5);
+	EXPECT_NEAR(scan[0].z, 5 * std::sin(M_PI / 180), 1e-5);  // level to the left: 1 deg up, still left
+	EXPECT_NEAR(scan[0].x, 0, 1e-6);
+	EXPECT_NEAR(scan[0].time, -0.025f, 1e-7);  // the azimuth, and with it the time, is kept
 }
 }  // namespace vlo::test

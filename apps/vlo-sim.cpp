@@ -6,6 +6,7 @@
 #include <vlo/sim/sequence_writer.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -29,6 +30,7 @@ int main(int argc, char** argv)
 				{"realism", "", "a real sensor's errors (default): per-laser calibration errors, range noise growing with range and incidence, mixed returns at depth edges, dropouts on dark and grazing surfaces, intensity noise; camera blur, exposure changes, shot noise; a rolling sweep written without per-point times (doc/SIMULATOR.md)"},
 				{"no-realism", "", "the exact sensor: nominal beams, 2 cm range noise, 0.5 % dropouts, 2 grey levels of image noise, an ideal (de-skewed) sweep unless --lidar-distortion"},
 				{"point-times", "", "with the realism: write each point's time and ring (a rolling sweep as a driver with times gives it)"},
+				{"lidar-elevation-error", "DEG", "with the realism: every laser fires this much above its nominal elevation, an error common to all (KITTI's HDL-64: 0.22; vlo-run corrects it with [lidar] elevation_offset_deg; default 0)"},
 				{"no-noise", "", "the exact sensor without image noise, range noise or dropouts (for checks; implies --no-realism)"},
 				{"foliage-depth", "M", "mean depth of LiDAR returns inside tree crowns and bushes (default 0: solid hulls)"},
 				{"sun-shadows", "", "strong sun: tree crowns cast hard, dappled shadows on everything the camera sees (lit x1.45, shade x0.4)"},
@@ -72,7 +74,12 @@ int main(int argc, char** argv)
 			cfg.realism = vlo::sim::realisticSensors(cfg.lidar);
 			cfg.lidar_distortion = true;  // a spinning LiDAR's sweep, moved by the vehicle while it turns
 			cfg.lidar_point_times = cl.has("point-times");
+			cfg.realism.lidar.common_elevation_error_deg = cl.getDouble("lidar-elevation-error", 0);
+			if (!(std::abs(cfg.realism.lidar.common_elevation_error_deg) <= 2))
+				vlo::failInput("--lidar-elevation-error", "must be between -2 and 2 degrees");
 		}
+		else if (cl.has("lidar-elevation-error"))
+			vlo::failInput("--lidar-elevation-error", "needs the realism (the exact sensor's beams are nominal)");
 		if (cfg.lidar_ideal_deskew && !cfg.lidar_distortion) vlo::failInput("--ideal-deskew", "needs --lidar-distortion");
 		if (cl.has("no-noise")) cfg.range_noise = cfg.image_noise = cfg.dropout = 0;
 		cfg.foliage_depth = cl.getDouble("foliage-depth", 0);

@@ -17,7 +17,7 @@ LidarErrors::LidarErrors(const LidarRealism& p, int lasers, uint64_t seed) : p_(
 	Rng rng = Rng::stream(seed, "lidar calibration");
 	for (int i = 0; i < lasers; ++i)
 	{
-		elevation_.push_back(p.elevation_error_deg * kRadPerDeg * rng.normal());
+		elevation_.push_back((p.common_elevation_error_deg + p.elevation_error_deg * rng.normal()) * kRadPerDeg);
 		azimuth_.push_back(p.azimuth_error_deg * kRadPerDeg * rng.normal());
 		range_.push_back(p.range_offset_m * rng.normal());
 		gain_.push_back(std::max(0.0, 1 + p.intensity_gain_error * rng.normal()));

@@ -15,6 +15,9 @@ struct LidarRealism
 	// elevation and azimuth plus a fixed offset, and adds a fixed range offset; the points are
 	// computed with the nominal angles, as a driver with the shipped calibration does.
 	double elevation_error_deg = 0.06;  ///< 1 sigma of each laser's elevation offset
+	/// ... plus an offset common to every laser (0 in the preset; KITTI's HDL-64 fires 0.22 deg higher
+	/// than its shipped calibration says, doc/LOAM.md "A common elevation error")
+	double common_elevation_error_deg = 0;
 	double azimuth_error_deg = 0.06;  ///< 1 sigma of each laser's azimuth offset
 	double range_offset_m = 0.015;  ///< 1 sigma of each laser's range offset
 

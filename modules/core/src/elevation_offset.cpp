@@ -4,13 +4,12 @@
 
 namespace vlo
 {
-PointCloud raiseElevations(const PointCloud& scan, double offset_deg)
+void raiseElevations(PointCloud& scan, double offset_deg)
 {
-	PointCloud out = scan;
 	// A rotation by the offset in each ray's vertical plane (horizontal distance h, height z): no
 	// trigonometry per point (a 120k-point sweep costs well under a millisecond).
 	const double c = std::cos(offset_deg * M_PI / 180), s = std::sin(offset_deg * M_PI / 180);
-	for (auto& p : out)
+	for (auto& p : scan)
 	{
 		const double h = std::sqrt(double(p.x) * p.x + double(p.y) * p.y);
 		if (h < 1e-9) continue;  // straight up or down: no azimuth to keep
@@ -19,6 +18,5 @@ PointCloud raiseElevations(const PointCloud& scan, double offset_deg)
 		p.x = static_cast<float>(p.x * f);
 		p.y = static_cast<float>(p.y * f);
 	}
-	return out;
 }
 }  // namespace vlo

@@ -14,7 +14,8 @@ TEST(ElevationOffset, RaysTurnUpKeepingRangeAndAzimuth)
 	b.x = 0, b.y = -8, b.z = -1.73f;  // the ground to the right
 	c.x = 0, c.y = 0, c.z = 5;  // straight up: no azimuth, unchanged
 	scan = {a, b, c};
-	const PointCloud out = raiseElevations(scan, 1.0);
+	PointCloud out = scan;
+	raiseElevations(out, 1.0);
 	const double d = M_PI / 180;
 	EXPECT_NEAR(out[0].x, 10 * std::cos(d), 1e-5);
 	EXPECT_NEAR(out[0].y, 0, 1e-6);
@@ -24,5 +25,7 @@ TEST(ElevationOffset, RaysTurnUpKeepingRangeAndAzimuth)
 	EXPECT_NEAR(out[1].y, -r * std::cos(e), 1e-5);
 	EXPECT_NEAR(out[1].z, r * std::sin(e), 1e-5);
 	EXPECT_EQ(out[2].z, 5.0f);
-	EXPECT_EQ(raiseElevations(scan, 0.0)[1].z, scan[1].z);
+	PointCloud same = scan;
+	raiseElevations(same, 0.0);
+	EXPECT_EQ(same[1].z, scan[1].z);
 }

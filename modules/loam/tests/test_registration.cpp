@@ -253,10 +253,6 @@ TEST(Registration, PlaneMatchesNeedAFourthPointOnThePlane)
 	EXPECT_LT(crown_checked, 0.5 * crown);
 }
 
-}  // namespace vlo::loam::test
-
-namespace vlo::loam::test
-{
 TEST(Registration, RoughPlanesHoldWhatSmoothOnesLeaveFree)
 {
 	// A corridor walled by heaps of 0.3 m blocks, each set off up to 0.15 m and turned up to 45 deg

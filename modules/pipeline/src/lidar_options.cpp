@@ -31,7 +31,7 @@ SpinningSweep LidarOptions::sweep() const
 
 void applyLidarOptions(PointCloud& scan, const LidarOptions& options)
 {
-	if (options.elevation_offset_deg != 0) scan = raiseElevations(scan, options.elevation_offset_deg);
+	if (options.elevation_offset_deg != 0) raiseElevations(scan, options.elevation_offset_deg);
 	switch (options.point_times)
 	{
 		case PointTimes::Sensor: return;

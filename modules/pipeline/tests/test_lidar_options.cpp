@@ -61,7 +61,6 @@ TEST(PointTimes, OptionsGiveTheSweep)
 	EXPECT_NEAR(s.timeAt(M_PI), 0.0125, 1e-15);  // counterclockwise: a quarter turn after
 }
 
-
 TEST(LidarOptions, TheElevationOffsetRaisesEveryRayBeforeTheTimes)
 {
 	pipeline::LidarOptions o;

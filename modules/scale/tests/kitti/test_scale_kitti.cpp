@@ -73,7 +73,7 @@ std::vector<double> run(const fs::path& root, const std::string& seq, double k, 
 	{
 		PointCloud scan;
 		io::readKittiBin(file("velodyne", i - 1, ".bin"), scan);
-		scan = raiseElevations(scan, elevation_offset_deg);
+		raiseElevations(scan, elevation_offset_deg);
 		const cv::Mat cur = image(i);
 		Eigen::Isometry3d cur_T_prev = cam2_T_cam0 * poses[i].inverse() * poses[i - 1] * cam2_T_cam0.inverse();
 		cur_T_prev.translation() *= k;  // a VO whose lengths are k times the true ones

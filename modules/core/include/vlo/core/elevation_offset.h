@@ -10,7 +10,7 @@
 
 namespace vlo
 {
-/// `scan` with every ray turned up by `offset_deg` about the horizontal axis across it (LiDAR frame,
-/// z up): the range and the azimuth stay, the elevation grows by the offset.
-PointCloud raiseElevations(const PointCloud& scan, double offset_deg);
+/// Turns every ray of `scan` up by `offset_deg` about the horizontal axis across it (LiDAR frame, z up),
+/// in place: the range and the azimuth stay, the elevation grows by the offset.
+void raiseElevations(PointCloud& scan, double offset_deg);
 }  // namespace vlo

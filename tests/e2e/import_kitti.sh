@@ -36,4 +36,5 @@ grep -qx "vlo-import: error: out/s06.rawlog: exists: give --overwrite to replace
 "$VLO_BIN/vlo-import" kitti-odometry --root kitti_odometry_06_0000-0050 --seq 06 --last 2 --out out/s06.rawlog \
 	--overwrite --quiet > /dev/null || fail "--overwrite"
 [ "$(ls out/s06_Images | wc -l)" -eq 3 ] || fail "--overwrite: expected 3 images, got $(ls out/s06_Images | wc -l)"
+cd / && rm -rf "$VLO_WORK"  # passed: nothing to look at
 echo OK

@@ -20,16 +20,6 @@ FRAMES=100  # ~120 m: at 40 frames t_err (~1 mm per 10 m) is mostly noise
 BOUND=1.3  # mean ratio rolling / undistorted: below it with the times, above it without
 IDEAL_BOUND=1.3  # mean ratio deskewed by LOAM / deskewed ideally
 
-# the three drives of one seed, generated side by side
-for s in $SEEDS; do
-	for n in plain dist ideal; do
-		"$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames $FRAMES --seed "$s" --no-realism --out "${n}_$s.rawlog" --quiet \
-			$([ $n != plain ] && echo --lidar-distortion) $([ $n = ideal ] && echo --ideal-deskew) > /dev/null &
-	done
-	wait -n && wait -n && wait -n || fail "seed $s: vlo-sim failed"
-done
-rawlog-edit --info -i dist_1.rawlog | grep -Eq "LIDAR +/ +$FRAMES " || fail "rawlog-edit does not see $FRAMES scans"
-
 # rpe NAME SEED RAWLOG MODE [--set ...]: runs and prints the frame-to-frame RMS [m] and the KITTI t_err [%]
 # over 10, 20 and 50 m against the seed's ground truth
 rpe() {
@@ -46,45 +36,60 @@ rpe() {
 # whose reference happens to be best)
 mean_ratio() { awk '{ a += $1; b += $2 } END { if (a > 0) printf "%.3f", b / a }'; }
 
-for mode in lo vlo; do
-	rms_pairs="" terr_pairs="" ideal_rms_pairs="" ideal_terr_pairs=""
-	for s in $SEEDS; do
+# Pairs "reference rolling" per line, by comparison: undistorted_MODE, ideal_MODE (rolling sweep against
+# the undistorted drive and against the ideal deskew), ignored, azimuth (lo with the times ignored or from the
+# azimuth, against the undistorted drive); each of frame-to-frame RMS (rms_*) and t_err (terr_*).
+declare -A rms terr
+add_pair() { rms[$1]+="$2 $4"$'\n' terr[$1]+="$3 $5"$'\n'; }  # add_pair KEY REF_RMS REF_TERR RMS TERR
+
+# One seed at a time, its three drives (~0.9 GB) deleted once measured.
+for s in $SEEDS; do
+	for n in plain dist ideal; do
+		"$BIN/vlo-sim" --scenario urban --lidar hdl64 --frames $FRAMES --seed "$s" --no-realism --out "${n}_$s.rawlog" --quiet \
+			$([ $n != plain ] && echo --lidar-distortion) $([ $n = ideal ] && echo --ideal-deskew) > /dev/null &
+	done
+	wait -n && wait -n && wait -n || fail "seed $s: vlo-sim failed"
+	[ "$s" = 1 ] && { rawlog-edit --info -i dist_1.rawlog | grep -Eq "LIDAR +/ +$FRAMES " || fail "rawlog-edit does not see $FRAMES scans"; }
+	for mode in lo vlo; do
 		read -r plain plain_t <<< "$(rpe "plain_${mode}_$s" "$s" "plain_$s.rawlog" $mode)"
 		read -r timed timed_t <<< "$(rpe "dist_${mode}_$s" "$s" "dist_$s.rawlog" $mode)"
 		read -r ideal ideal_t <<< "$(rpe "ideal_${mode}_$s" "$s" "ideal_$s.rawlog" $mode)"
 		echo "$mode seed $s: frame-to-frame RMS $plain m, t_err $plain_t % undistorted; $timed m, $timed_t % rolling sweep;" \
 			"$ideal m, $ideal_t % deskewed ideally"
-		rms_pairs+="$plain $timed"$'\n' terr_pairs+="$plain_t $timed_t"$'\n'
-		ideal_rms_pairs+="$ideal $timed"$'\n' ideal_terr_pairs+="$ideal_t $timed_t"$'\n'
+		add_pair "undistorted_$mode" "$plain" "$plain_t" "$timed" "$timed_t"
+		add_pair "ideal_$mode" "$ideal" "$ideal_t" "$timed" "$timed_t"
 	done
-	rms=$(mean_ratio <<< "${rms_pairs%$'\n'}") terr=$(mean_ratio <<< "${terr_pairs%$'\n'}")
-	echo "$mode: mean ratio rolling / undistorted: frame-to-frame $rms, t_err $terr"
-	below "$rms" $BOUND || fail "$mode: mean frame-to-frame ratio $rms above $BOUND"
-	below "$terr" $BOUND || fail "$mode: mean t_err ratio $terr above $BOUND"
-	rms=$(mean_ratio <<< "${ideal_rms_pairs%$'\n'}") terr=$(mean_ratio <<< "${ideal_terr_pairs%$'\n'}")
-	echo "$mode: mean ratio rolling / deskewed ideally: frame-to-frame $rms, t_err $terr"
-	below "$rms" $IDEAL_BOUND || fail "$mode: mean frame-to-frame ratio to the ideal deskew $rms above $IDEAL_BOUND"
-	below "$terr" $IDEAL_BOUND || fail "$mode: mean t_err ratio to the ideal deskew $terr above $IDEAL_BOUND"
+	read -r ignored ignored_t <<< "$(rpe "ignored_lo_$s" "$s" "dist_$s.rawlog" lo --set lidar.point_times=none)"
+	read -r az az_t <<< "$(rpe "azimuth_lo_$s" "$s" "dist_$s.rawlog" lo --set lidar.point_times=azimuth)"
+	plain=$(jv "plain_lo_$s.json" rpe_t_rmse_m) plain_t=$(jv "plain_lo_${s}_k.json" kitti_t_err_pct)
+	add_pair ignored "$plain" "$plain_t" "$ignored" "$ignored_t"
+	add_pair azimuth "$plain" "$plain_t" "$az" "$az_t"
+	grep -q ',azimuth,' "out_azimuth_lo_$s/frames.csv" || fail "seed $s: frames.csv does not say the times came from the azimuth"
+	rm -f ./*_"$s".rawlog
+	rm -rf ./*_"$s"_Images
+done
+# ratios KEY: "frame-to-frame t_err", the mean ratios of one comparison
+ratios() { echo "$(mean_ratio <<< "${rms[$1]%$'\n'}") $(mean_ratio <<< "${terr[$1]%$'\n'}")"; }
+
+for mode in lo vlo; do
+	read -r r t <<< "$(ratios "undistorted_$mode")"
+	echo "$mode: mean ratio rolling / undistorted: frame-to-frame $r, t_err $t"
+	below "$r" $BOUND || fail "$mode: mean frame-to-frame ratio $r above $BOUND"
+	below "$t" $BOUND || fail "$mode: mean t_err ratio $t above $BOUND"
+	read -r r t <<< "$(ratios "ideal_$mode")"
+	echo "$mode: mean ratio rolling / deskewed ideally: frame-to-frame $r, t_err $t"
+	below "$r" $IDEAL_BOUND || fail "$mode: mean frame-to-frame ratio to the ideal deskew $r above $IDEAL_BOUND"
+	below "$t" $IDEAL_BOUND || fail "$mode: mean t_err ratio to the ideal deskew $t above $IDEAL_BOUND"
 done
 
 # the same check with the times ignored fails it by far: the test sees the deskew; with times from the
 # azimuth it passes
-rms_pairs="" terr_pairs="" az_rms_pairs="" az_terr_pairs=""
-for s in $SEEDS; do
-	read -r ignored ignored_t <<< "$(rpe "ignored_lo_$s" "$s" "dist_$s.rawlog" lo --set lidar.point_times=none)"
-	read -r az az_t <<< "$(rpe "azimuth_lo_$s" "$s" "dist_$s.rawlog" lo --set lidar.point_times=azimuth)"
-	rms_pairs+="$(jv "plain_lo_$s.json" rpe_t_rmse_m) $ignored"$'\n'
-	terr_pairs+="$(jv "plain_lo_${s}_k.json" kitti_t_err_pct) $ignored_t"$'\n'
-	az_rms_pairs+="$(jv "plain_lo_$s.json" rpe_t_rmse_m) $az"$'\n'
-	az_terr_pairs+="$(jv "plain_lo_${s}_k.json" kitti_t_err_pct) $az_t"$'\n'
-	grep -q ',azimuth,' "out_azimuth_lo_$s/frames.csv" || fail "seed $s: frames.csv does not say the times came from the azimuth"
-done
-rms=$(mean_ratio <<< "${az_rms_pairs%$'\n'}") terr=$(mean_ratio <<< "${az_terr_pairs%$'\n'}")
-echo "lo: mean ratio with times from the azimuth: frame-to-frame $rms, t_err $terr"
-below "$rms" $BOUND || fail "times from the azimuth: mean frame-to-frame ratio $rms above $BOUND"
-below "$terr" $BOUND || fail "times from the azimuth: mean t_err ratio $terr above $BOUND"
-rms=$(mean_ratio <<< "${rms_pairs%$'\n'}") terr=$(mean_ratio <<< "${terr_pairs%$'\n'}")
-echo "lo: mean ratio with the point times ignored: frame-to-frame $rms, t_err $terr"
-below $BOUND "$rms" || fail "the times ignored: mean frame-to-frame ratio only $rms (expected above $BOUND)"
-below $BOUND "$terr" || fail "the times ignored: mean t_err ratio only $terr (expected above $BOUND)"
+read -r r t <<< "$(ratios azimuth)"
+echo "lo: mean ratio with times from the azimuth: frame-to-frame $r, t_err $t"
+below "$r" $BOUND || fail "times from the azimuth: mean frame-to-frame ratio $r above $BOUND"
+below "$t" $BOUND || fail "times from the azimuth: mean t_err ratio $t above $BOUND"
+read -r r t <<< "$(ratios ignored)"
+echo "lo: mean ratio with the point times ignored: frame-to-frame $r, t_err $t"
+below $BOUND "$r" || fail "the times ignored: mean frame-to-frame ratio only $r (expected above $BOUND)"
+below $BOUND "$t" || fail "the times ignored: mean t_err ratio only $t (expected above $BOUND)"
 finish lidar_times

@@ -19,7 +19,33 @@ namespace vlo::test
 {
 namespace fs = std::filesystem;
 
-/// An empty folder for the running test (removed and recreated).
+/// Removes the scratch folders of each test that passed (the io tests write ~0.5 GB in all; a failed
+/// test's folders stay for a look).
+class ScratchCleaner : public ::testing::EmptyTestEventListener
+{
+   public:
+	static void add(const fs::path& dir)
+	{
+		static auto* cleaner = [] {
+			auto* c = new ScratchCleaner;  // owned by gtest's listener list
+			::testing::UnitTest::GetInstance()->listeners().Append(c);
+			return c;
+		}();
+		cleaner->dirs_.push_back(dir);
+	}
+	void OnTestEnd(const ::testing::TestInfo& info) override
+	{
+		std::error_code ec;
+		if (info.result()->Passed())
+			for (const auto& d : dirs_) fs::remove_all(d, ec);
+		dirs_.clear();
+	}
+
+   private:
+	std::vector<fs::path> dirs_;
+};
+
+/// An empty folder for the running test (removed and recreated), removed after it when it passes.
 inline std::string freshDir(const std::string& tag = "")
 {
 	const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -27,6 +53,7 @@ inline std::string freshDir(const std::string& tag = "")
 		("vlo_io_" + std::string(info->test_suite_name()) + "_" + info->name() + tag);
 	fs::remove_all(dir);
 	fs::create_directories(dir);
+	ScratchCleaner::add(dir);
 	return dir.string();
 }
 

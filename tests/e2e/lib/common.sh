@@ -1,5 +1,6 @@
 # Helpers of the end-to-end scripts: `. "$VLO_SRC/tests/e2e/lib/common.sh"` after `set -u`.
-# Starts in a fresh $VLO_WORK; fail() and skip() count, finish NAME reports and sets the exit code.
+# Starts in a fresh $VLO_WORK; fail() and skip() count, finish NAME reports and sets the exit code (and
+# removes $VLO_WORK when every check passed: a failed test's files stay for a look).
 W="${VLO_WORK:?}"
 rm -rf "$W" && mkdir -p "$W" && cd "$W" || exit 1
 fails=0 skips=0
@@ -46,6 +47,7 @@ finish() {
 	if [ $fails -gt 0 ]; then echo "$1: $fails failure(s)"; exit 1; fi
 	if [ $skips -gt 0 ]; then echo "$1: passed, $skips check(s) skipped"; exit 77; fi
 	echo "$1: all passed"
+	cd / && rm -rf "$W"  # a passed test's files are not needed; the suite would otherwise keep ~7 GB
 	exit 0
 }
 # expect_exit2 NAME TEXT OUTDIR CMD...: CMD exits with code 2 and one stderr line holding TEXT, and
